@@ -1,0 +1,17 @@
+#pragma once
+// Exact geometric predicates (CGAL's filtered exact kernel behind a plain interface, so
+// that CGAL stays private to a few translation units).
+
+#include "core/mesh/tet_mesh.h"
+
+namespace resect {
+
+/// Sign of det[b-a, c-a, d-a]: +1 if d lies on the positive side of the plane (a, b, c)
+/// (the tet a,b,c,d is positively oriented), -1 on the negative side, 0 if coplanar.
+/// Exact for any finite double input.
+int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
+/// Sign of the 2-D orientation of (a, b, c) after dropping coordinate `drop` (0, 1 or 2).
+int orient2dProjected(const Vec3& a, const Vec3& b, const Vec3& c, int drop);
+
+} // namespace resect

@@ -1,0 +1,31 @@
+#pragma once
+// TriangleSurface: a triangle mesh, used for anatomy surfaces (input to the mesher) and
+// for the embedded high-resolution visual surface.
+
+#include "core/mesh/tet_mesh.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace resect {
+
+struct TriangleSurface {
+    std::vector<Vec3> positions;          ///< #V positions
+    std::vector<Tri> triangles;           ///< #F triangles, counter-clockwise seen from outside
+    std::vector<Eigen::Vector2d> uvs;     ///< empty, or #V texture coordinates
+
+    int vertexCount() const { return static_cast<int>(positions.size()); }
+    int triangleCount() const { return static_cast<int>(triangles.size()); }
+};
+
+/// Signed volume enclosed by a closed, outward-oriented surface (divergence theorem:
+/// sum over triangles of p0 . (p1 x p2) / 6). Meaningless for open surfaces.
+double enclosedVolume(const TriangleSurface& surface);
+
+/// Axis-aligned bounding box of the positions; {min, max}. Both zero for an empty surface.
+std::array<Vec3, 2> boundingBox(std::span<const Vec3> points);
+
+} // namespace resect
