@@ -1,1 +1,24 @@
-// placeholder: being written
+#include "core/mesh/predicates.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+namespace resect {
+namespace {
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+K::Point_3 toCgal(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
+} // namespace
+
+int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    // CGAL::orientation(p, q, r, s) is POSITIVE when s lies on the positive side of the
+    // oriented plane (p, q, r), i.e. det[q-p, r-p, s-p] > 0.
+    return static_cast<int>(CGAL::orientation(toCgal(a), toCgal(b), toCgal(c), toCgal(d)));
+}
+
+int orient2dProjected(const Vec3& a, const Vec3& b, const Vec3& c, int drop) {
+    const int i = drop == 0 ? 1 : 0;
+    const int j = drop == 2 ? 1 : 2;
+    const K::Point_2 pa(a[i], a[j]), pb(b[i], b[j]), pc(c[i], c[j]);
+    return static_cast<int>(CGAL::orientation(pa, pb, pc));
+}
+
+} // namespace resect

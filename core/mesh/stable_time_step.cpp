@@ -1,1 +1,157 @@
-// placeholder: being written
+#include "core/mesh/stable_time_step.h"
+
+#include "core/mesh/topology.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace resect {
+namespace {
+
+/// The linearised model of stable_time_step.h, precomputed once per estimate.
+struct RestStiffness {
+    std::vector<std::array<int, 2>> edges;
+    std::vector<Vec3> edgeDir;        ///< unit direction per edge
+    std::vector<double> edgeK;        ///< k_s per edge (Eq. 4)
+    std::vector<std::array<Vec3, 4>> tetGrad;  ///< dV/dp_i per tet
+    std::vector<double> tetK;         ///< k_v per tet (Eq. 4)
+};
+
+RestStiffness buildRestStiffness(const TetMesh& mesh, const Material& material) {
+    RestStiffness s;
+    const auto m = mesh.masses();
+    s.edges = uniqueEdges(mesh);
+    s.edgeDir.resize(s.edges.size());
+    s.edgeK.resize(s.edges.size());
+    for (std::size_t e = 0; e < s.edges.size(); ++e) {
+        const auto [a, b] = s.edges[e];
+        const Vec3 d = mesh.ref(b) - mesh.ref(a);
+        const double l2 = d.squaredNorm();
+        s.edgeDir[e] = l2 > 0 ? Vec3(d / std::sqrt(l2)) : Vec3::Zero();
+        s.edgeK[e] = l2 > 0 ? material.stiffness * (m[a] + m[b]) / l2 : 0.0;
+    }
+    s.tetGrad.resize(mesh.tetCount());
+    s.tetK.resize(mesh.tetCount());
+    for (int t = 0; t < mesh.tetCount(); ++t) {
+        const Tet& q = mesh.tet(t);
+        const Vec3 &p0 = mesh.ref(q[0]), &p1 = mesh.ref(q[1]), &p2 = mesh.ref(q[2]),
+                   &p3 = mesh.ref(q[3]);
+        // V = (p1-p0) . ((p2-p0) x (p3-p0)) / 6; gradients by cyclic permutation.
+        std::array<Vec3, 4> g;
+        g[1] = (p2 - p0).cross(p3 - p0) / 6.0;
+        g[2] = (p3 - p0).cross(p1 - p0) / 6.0;
+        g[3] = (p1 - p0).cross(p2 - p0) / 6.0;
+        g[0] = -(g[1] + g[2] + g[3]);
+        s.tetGrad[t] = g;
+        const double v0 = mesh.referenceVolume(t);
+        const double msum = m[q[0]] + m[q[1]] + m[q[2]] + m[q[3]];
+        s.tetK[t] = v0 != 0 ? material.stiffness * msum / (v0 * v0) : 0.0;
+    }
+    return s;
+}
+
+void apply(const TetMesh& mesh, const RestStiffness& s, std::span<const Vec3> x,
+           std::span<Vec3> y) {
+    std::fill(y.begin(), y.end(), Vec3::Zero());
+    for (std::size_t e = 0; e < s.edges.size(); ++e) {
+        const auto [a, b] = s.edges[e];
+        const Vec3& n = s.edgeDir[e];
+        const Vec3 f = s.edgeK[e] * n.dot(x[b] - x[a]) * n;
+        y[a] -= f;
+        y[b] += f;
+    }
+    for (int t = 0; t < mesh.tetCount(); ++t) {
+        const Tet& q = mesh.tet(t);
+        const auto& g = s.tetGrad[t];
+        double dv = 0;
+        for (int i = 0; i < 4; ++i)
+            dv += g[i].dot(x[q[i]]);
+        const double c = s.tetK[t] * dv;
+        for (int i = 0; i < 4; ++i)
+            y[q[i]] += c * g[i];
+    }
+}
+
+} // namespace
+
+void applyRestStiffness(const TetMesh& mesh, const Material& material, std::span<const Vec3> x,
+                        std::span<Vec3> y) {
+    apply(mesh, buildRestStiffness(mesh, material), x, y);
+}
+
+StableTimeStep stableTimeStep(const TetMesh& mesh, const Material& material,
+                              const StableTimeStepOptions& options) {
+    StableTimeStep result;
+    const int n = mesh.nodeCount();
+    if (mesh.empty() || n == 0)
+        return result;
+    const RestStiffness s = buildRestStiffness(mesh, material);
+    const auto m = mesh.masses();
+
+    // Block Gershgorin bound on M^-1 K: |lambda| <= max_i (||K_ii|| + sum_j ||K_ij||) / m_i.
+    std::vector<double> rowSum(n, 0.0);
+    for (std::size_t e = 0; e < s.edges.size(); ++e) {
+        rowSum[s.edges[e][0]] += 2 * s.edgeK[e];
+        rowSum[s.edges[e][1]] += 2 * s.edgeK[e];
+    }
+    for (int t = 0; t < mesh.tetCount(); ++t) {
+        const auto& g = s.tetGrad[t];
+        const double total = g[0].norm() + g[1].norm() + g[2].norm() + g[3].norm();
+        for (int i = 0; i < 4; ++i)
+            rowSum[mesh.tet(t)[i]] += s.tetK[t] * g[i].norm() * total;
+    }
+    std::vector<double> invSqrtMass(n, 0.0);
+    for (int i = 0; i < n; ++i) {
+        if (m[i] > 0) {
+            invSqrtMass[i] = 1.0 / std::sqrt(m[i]);
+            result.gershgorinBound = std::max(result.gershgorinBound, rowSum[i] / m[i]);
+        }
+    }
+    if (!(result.gershgorinBound > 0))
+        return result;
+
+    // Power iteration on A = M^-1/2 K M^-1/2 (symmetric positive semi-definite). The start
+    // vector is a fixed pseudo-random field so that the estimate is reproducible.
+    std::vector<Vec3> x(n), z(n), y(n);
+    std::uint64_t state = 0x853c49e6748fea9bull;
+    auto next = [&state] {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return static_cast<double>(state >> 11) / static_cast<double>(1ull << 53) - 0.5;
+    };
+    double norm2 = 0;
+    for (int i = 0; i < n; ++i) {
+        x[i] = invSqrtMass[i] > 0 ? Vec3(next(), next(), next()) : Vec3::Zero();
+        norm2 += x[i].squaredNorm();
+    }
+    double rayleigh = 0;
+    for (int it = 0; it < options.maxIterations; ++it) {
+        const double inv = 1.0 / std::sqrt(norm2);
+        for (int i = 0; i < n; ++i) {
+            x[i] *= inv;
+            z[i] = x[i] * invSqrtMass[i];
+        }
+        apply(mesh, s, z, y);
+        double rq = 0;
+        norm2 = 0;
+        for (int i = 0; i < n; ++i) {
+            y[i] *= invSqrtMass[i];
+            rq += x[i].dot(y[i]);
+            norm2 += y[i].squaredNorm();
+        }
+        result.iterations = it + 1;
+        const bool converged = std::abs(rq - rayleigh) <= options.relativeTolerance * std::abs(rq);
+        rayleigh = rq;
+        if (converged || !(norm2 > 0))
+            break;
+        std::swap(x, y);
+    }
+    result.lambdaMax = std::min(std::max(rayleigh, 0.0), result.gershgorinBound);
+    if (!(result.lambdaMax > 0))
+        result.lambdaMax = result.gershgorinBound;
+    result.dt = options.safety * 2.0 / std::sqrt(result.lambdaMax);
+    return result;
+}
+
+} // namespace resect

@@ -1,1 +1,114 @@
-// placeholder: being written
+#include "core/mesh/topology.h"
+
+#include <algorithm>
+#include <numeric>
+#include <unordered_map>
+
+namespace resect {
+namespace {
+
+/// Hash of a sorted face (used as an unordered_map key).
+struct TriHash {
+    std::size_t operator()(const Tri& f) const {
+        std::uint64_t h = static_cast<std::uint32_t>(f[0]);
+        h = h * 0x9E3779B97F4A7C15ull + static_cast<std::uint32_t>(f[1]);
+        h = (h ^ (h >> 29)) * 0xBF58476D1CE4E5B9ull + static_cast<std::uint32_t>(f[2]);
+        return static_cast<std::size_t>(h ^ (h >> 32));
+    }
+};
+
+Tri sorted(Tri f) {
+    std::sort(f.begin(), f.end());
+    return f;
+}
+
+int findRoot(std::vector<int>& parent, int x) {
+    while (parent[x] != x) {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
+    }
+    return x;
+}
+
+} // namespace
+
+std::vector<std::array<int, 2>> uniqueEdges(const TetMesh& mesh) {
+    // Per node, collect higher-indexed neighbours through node->tets: O(sum of valences).
+    std::vector<std::array<int, 2>> edges;
+    edges.reserve(static_cast<std::size_t>(mesh.tetCount()) * 7 / 5 + 16);
+    std::vector<int> scratch;
+    for (int n = 0; n < mesh.nodeCount(); ++n) {
+        scratch.clear();
+        for (int t : mesh.nodeTets(n))
+            for (int v : mesh.tet(t))
+                if (v > n)
+                    scratch.push_back(v);
+        std::sort(scratch.begin(), scratch.end());
+        scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
+        for (int v : scratch)
+            edges.push_back({n, v});
+    }
+    return edges;
+}
+
+std::vector<MeshFace> allFaces(const TetMesh& mesh) {
+    std::unordered_map<Tri, int, TriHash> index;
+    index.reserve(static_cast<std::size_t>(mesh.tetCount()) * 2 + 16);
+    std::vector<MeshFace> faces;
+    faces.reserve(static_cast<std::size_t>(mesh.tetCount()) * 2 + 16);
+    for (int t = 0; t < mesh.tetCount(); ++t) {
+        const Tet& q = mesh.tet(t);
+        for (const auto& lf : kTetFaces) {
+            const Tri f{q[lf[0]], q[lf[1]], q[lf[2]]};
+            auto [it, inserted] = index.try_emplace(sorted(f), static_cast<int>(faces.size()));
+            if (inserted) {
+                faces.push_back({f, {t, -1}, 0});
+            } else {
+                MeshFace& face = faces[it->second];
+                if (face.tets[1] < 0)
+                    face.tets[1] = t;
+                else
+                    ++face.extraTets;
+            }
+        }
+    }
+    return faces;
+}
+
+std::vector<BoundaryFace> boundaryFaces(const TetMesh& mesh) {
+    std::vector<BoundaryFace> result;
+    for (const MeshFace& f : allFaces(mesh))
+        if (f.tets[1] < 0)
+            result.push_back({f.nodes, f.tets[0]});
+    return result;
+}
+
+Components connectedComponents(const TetMesh& mesh) {
+    // Union-find over nodes: the nodes of a tet are joined; tets inherit their nodes' root.
+    std::vector<int> parent(mesh.nodeCount());
+    std::iota(parent.begin(), parent.end(), 0);
+    for (const Tet& q : mesh.tets())
+        for (int i = 1; i < 4; ++i) {
+            const int a = findRoot(parent, q[0]);
+            const int b = findRoot(parent, q[i]);
+            if (a != b)
+                parent[std::max(a, b)] = std::min(a, b);
+        }
+    Components c;
+    c.nodeComponent.assign(mesh.nodeCount(), -1);
+    std::vector<int> label(mesh.nodeCount(), -1);
+    for (int n = 0; n < mesh.nodeCount(); ++n) {
+        if (mesh.nodeTets(n).empty())
+            continue;
+        const int r = findRoot(parent, n);
+        if (label[r] < 0)
+            label[r] = c.count++;
+        c.nodeComponent[n] = label[r];
+    }
+    c.tetComponent.resize(mesh.tetCount());
+    for (int t = 0; t < mesh.tetCount(); ++t)
+        c.tetComponent[t] = c.nodeComponent[mesh.tet(t)[0]];
+    return c;
+}
+
+} // namespace resect

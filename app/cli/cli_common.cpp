@@ -1,0 +1,159 @@
+#include "app/cli/cli_common.h"
+
+#include "scenario/atomic_file.h"
+
+#include <QJsonDocument>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace resect::cli {
+
+void badInput(const std::string& message) { throw CliError{kBadInput, message}; }
+
+void requireOk(const Status& status) {
+    if (!status.ok())
+        badInput(status.message());
+}
+
+std::optional<std::string> Args::option(const std::string& name) {
+    std::optional<std::string> value;
+    for (std::size_t i = 0; i < m_args.size();) {
+        if (m_args[i] == name) {
+            if (i + 1 >= m_args.size())
+                badInput(name + ": missing value");
+            if (value)
+                badInput(name + ": given more than once");
+            value = m_args[i + 1];
+            m_args.erase(m_args.begin() + i, m_args.begin() + i + 2);
+        } else if (m_args[i].rfind(name + "=", 0) == 0) {
+            if (value)
+                badInput(name + ": given more than once");
+            value = m_args[i].substr(name.size() + 1);
+            m_args.erase(m_args.begin() + i);
+        } else {
+            ++i;
+        }
+    }
+    return value;
+}
+
+std::vector<std::string> Args::options(const std::string& name) {
+    std::vector<std::string> values;
+    for (std::size_t i = 0; i < m_args.size();) {
+        if (m_args[i] == name) {
+            if (i + 1 >= m_args.size())
+                badInput(name + ": missing value");
+            values.push_back(m_args[i + 1]);
+            m_args.erase(m_args.begin() + i, m_args.begin() + i + 2);
+        } else if (m_args[i].rfind(name + "=", 0) == 0) {
+            values.push_back(m_args[i].substr(name.size() + 1));
+            m_args.erase(m_args.begin() + i);
+        } else {
+            ++i;
+        }
+    }
+    return values;
+}
+
+std::string Args::requiredOption(const std::string& name) {
+    auto v = option(name);
+    if (!v || v->empty())
+        badInput(name + " is required");
+    return *v;
+}
+
+bool Args::flag(const std::string& name) {
+    bool found = false;
+    for (std::size_t i = 0; i < m_args.size();) {
+        if (m_args[i] == name) {
+            found = true;
+            m_args.erase(m_args.begin() + i);
+        } else {
+            ++i;
+        }
+    }
+    return found;
+}
+
+std::optional<double> Args::number(const std::string& name, double min, double max) {
+    const auto text = option(name);
+    if (!text)
+        return std::nullopt;
+    std::size_t used = 0;
+    double value = 0;
+    try {
+        value = std::stod(*text, &used);
+    } catch (...) {
+        used = 0;
+    }
+    if (used == 0 || used != text->size() || !std::isfinite(value))
+        badInput(name + ": expected a finite number, got '" + *text + "'");
+    if (value < min || value > max)
+        badInput(name + ": " + *text + " is out of range [" + std::to_string(min) + ", " +
+                 std::to_string(max) + "]");
+    return value;
+}
+
+std::optional<int> Args::integer(const std::string& name, int min, int max) {
+    const auto text = option(name);
+    if (!text)
+        return std::nullopt;
+    std::size_t used = 0;
+    long long value = 0;
+    try {
+        value = std::stoll(*text, &used);
+    } catch (...) {
+        used = 0;
+    }
+    if (used == 0 || used != text->size())
+        badInput(name + ": expected a whole number, got '" + *text + "'");
+    if (value < min || value > max)
+        badInput(name + ": " + *text + " is out of range [" + std::to_string(min) + ", " +
+                 std::to_string(max) + "]");
+    return static_cast<int>(value);
+}
+
+std::vector<std::string> Args::positionals() {
+    std::vector<std::string> result;
+    for (std::size_t i = 0; i < m_args.size();) {
+        if (m_args[i].rfind("--", 0) != 0) {
+            result.push_back(m_args[i]);
+            m_args.erase(m_args.begin() + i);
+        } else {
+            ++i;
+        }
+    }
+    return result;
+}
+
+void Args::finish() const {
+    if (!m_args.empty())
+        badInput("unknown option " + m_args.front());
+}
+
+void printJson(const QJsonObject& object) {
+    const QByteArray text = QJsonDocument(object).toJson(QJsonDocument::Indented);
+    std::fwrite(text.constData(), 1, static_cast<std::size_t>(text.size()), stdout);
+    std::fflush(stdout);
+}
+
+Status writeJson(const std::string& path, const QJsonObject& object) {
+    const QByteArray text = QJsonDocument(object).toJson(QJsonDocument::Indented);
+    return writeAtomically(path, [&](const std::string& tmp) {
+        std::ofstream out(tmp, std::ios::binary);
+        out.write(text.constData(), text.size());
+        out.close();
+        return out ? Status::success() : Status::error(path + ": cannot write");
+    });
+}
+
+void requireDistinct(const std::string& input, const std::string& out) {
+    std::error_code ec;
+    if (std::filesystem::exists(out, ec) && std::filesystem::equivalent(input, out, ec))
+        badInput("--out " + out + " is the input file; refusing to overwrite an input");
+}
+
+} // namespace resect::cli

@@ -1,0 +1,60 @@
+#pragma once
+// Shared pieces of the `resect` command line: argument parsing with clear errors, exit
+// codes (0 success, 2 bad input, 1 internal failure) and JSON output.
+
+#include "core/status.h"
+
+#include <QJsonObject>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace resect::cli {
+
+enum ExitCode { kOk = 0, kInternal = 1, kBadInput = 2 };
+
+/// Thrown inside a command, caught once in main(): one line on stderr and the exit code.
+struct CliError {
+    int code;
+    std::string message;
+};
+
+[[noreturn]] void badInput(const std::string& message);
+/// Throws CliError(kBadInput) with the status message if it failed.
+void requireOk(const Status& status);
+
+/// Arguments of one subcommand. Options are "--name value" or "--name=value"; everything
+/// taken is removed, and finish() rejects whatever is left.
+class Args {
+public:
+    explicit Args(std::vector<std::string> args) : m_args(std::move(args)) {}
+
+    std::optional<std::string> option(const std::string& name);
+    std::vector<std::string> options(const std::string& name);  ///< repeated option
+    std::string requiredOption(const std::string& name);
+    bool flag(const std::string& name);
+    /// A finite number in [min, max]; the error names the option and the bad value.
+    std::optional<double> number(const std::string& name, double min, double max);
+    std::optional<int> integer(const std::string& name, int min, int max);
+    /// Remaining arguments that do not start with "--".
+    std::vector<std::string> positionals();
+    /// Fails on any unknown option left over.
+    void finish() const;
+
+private:
+    std::vector<std::string> m_args;
+};
+
+/// Compact-indented JSON on stdout.
+void printJson(const QJsonObject& object);
+/// Writes JSON atomically (temporary file, then rename).
+Status writeJson(const std::string& path, const QJsonObject& object);
+/// Bad input if `out` names the same existing file as `input` (never overwrite inputs).
+void requireDistinct(const std::string& input, const std::string& out);
+
+int runInfo(Args args);
+int runMesh(Args args);
+int runDemo(Args args);
+
+} // namespace resect::cli

@@ -1,0 +1,59 @@
+// resect: the command-line twin of Resect Studio. See DESIGN.md "Command line".
+#include "app/cli/cli_common.h"
+
+#include <QCoreApplication>
+
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace {
+
+const char* kUsage = R"(usage: resect COMMAND [options]
+
+commands:
+  info MESH                         JSON summary of a tet mesh (.vtu, .msh, .node/.ele)
+  mesh (SURFACE | --sample NAME) --out OUT.vtu [--edge-length L] [--repair] [--seed N]
+                                    tetrahedralize a closed surface (any format assimp
+                                    reads) or a built-in sample (polyp, myoma)
+  demo [--out DIR] [--sample NAME]  headless demo: mesh a sample, print its quality,
+                                    write the mesh, surface and summary to DIR
+
+exit codes: 0 success, 2 bad input, 1 internal failure
+)";
+
+} // namespace
+
+int main(int argc, char** argv) {
+    using namespace resect::cli;
+    QCoreApplication app(argc, argv);  // for Qt's JSON and file helpers; no event loop
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+        std::fputs(kUsage, args.empty() ? stderr : stdout);
+        return args.empty() ? kBadInput : kOk;
+    }
+    const std::string command = args[0];
+    args.erase(args.begin());
+    try {
+        if (command == "info")
+            return runInfo(Args(args));
+        if (command == "mesh")
+            return runMesh(Args(args));
+        if (command == "demo")
+            return runDemo(Args(args));
+        throw CliError{kBadInput, "unknown command '" + command + "' (try resect --help)"};
+    } catch (const CliError& e) {
+        std::fprintf(stderr, "resect %s: %s\n", command.c_str(), e.message.c_str());
+        return e.code;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "resect %s: out of memory\n", command.c_str());
+        return kInternal;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "resect %s: internal error: %s\n", command.c_str(), e.what());
+        return kInternal;
+    } catch (...) {
+        std::fprintf(stderr, "resect %s: internal error\n", command.c_str());
+        return kInternal;
+    }
+}

@@ -1,0 +1,225 @@
+// End-to-end tests of `resect info` and `resect mesh`: exit codes, one-line errors naming the
+// problem, inputs never modified, no partial output files.
+#include "core/mesh/box_mesh.h"
+#include "core/mesh/masses.h"
+#include "scenario/mesh_io.h"
+
+#include <QCryptographicHash>
+#include <QDir>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace resect;
+
+namespace {
+
+struct Run {
+    int code = -1;
+    QString out;
+    QString err;
+};
+
+Run resect(const QStringList& args, int timeoutMs = 600000) {
+    QProcess p;
+    p.start(RESECT_CLI, args);
+    Run r;
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        r.err = "timed out";
+        return r;
+    }
+    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;  // -2: crashed
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+void writeText(const QString& path, const QByteArray& text) {
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(text);
+}
+
+QByteArray sha(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    return QCryptographicHash::hash(f.readAll(), QCryptographicHash::Sha256);
+}
+
+// A closed unit cube as OBJ (12 triangles, outward).
+const QByteArray kCubeVertices = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
+const QByteArray kCubeFacesNoTop =
+    "f 1 3 2\nf 1 4 3\n"   // bottom z=0
+    "f 1 2 6\nf 1 6 5\n"   // y=0
+    "f 2 3 7\nf 2 7 6\n"   // x=1
+    "f 3 4 8\nf 3 8 7\n"   // y=1
+    "f 4 1 5\nf 4 5 8\n";  // x=0
+const QByteArray kCubeTop = "f 5 6 7\nf 5 7 8\n";
+
+} // namespace
+
+class TestCliMesh : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+    QString path(const QString& name) const { return m_dir.filePath(name); }
+
+private slots:
+    void usageErrors_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("no command") << QStringList{} << "usage";
+        QTest::newRow("unknown command") << QStringList{"frobnicate"} << "unknown command";
+        QTest::newRow("info without file") << QStringList{"info"} << "MESH";
+        QTest::newRow("info missing file") << QStringList{"info", "/nonexistent/x.vtu"} << "/nonexistent/x.vtu";
+        QTest::newRow("info unknown option") << QStringList{"info", "a.vtu", "--bogus"} << "--bogus";
+        QTest::newRow("mesh without out") << QStringList{"mesh", "--sample", "polyp"} << "--out";
+        QTest::newRow("mesh unknown sample") << QStringList{"mesh", "--sample", "liver", "--out", "x.vtu"} << "liver";
+        QTest::newRow("mesh both inputs") << QStringList{"mesh", "a.obj", "--sample", "polyp", "--out", "x.vtu"} << "not both";
+        QTest::newRow("edge length text") << QStringList{"mesh", "--sample", "polyp", "--out", "x.vtu", "--edge-length", "abc"} << "--edge-length";
+        QTest::newRow("edge length negative") << QStringList{"mesh", "--sample", "polyp", "--out", "x.vtu", "--edge-length", "-1"} << "--edge-length";
+        QTest::newRow("edge length zero") << QStringList{"mesh", "--sample", "polyp", "--out", "x.vtu", "--edge-length", "0"} << "--edge-length";
+        QTest::newRow("edge length nan") << QStringList{"mesh", "--sample", "polyp", "--out", "x.vtu", "--edge-length", "nan"} << "--edge-length";
+        QTest::newRow("edge length absurdly small") << QStringList{"mesh", "--sample", "polyp", "--out", "x.vtu", "--edge-length", "1e-9"} << "edge";
+        QTest::newRow("mesh missing file") << QStringList{"mesh", "/nonexistent/s.obj", "--out", "x.vtu"} << "/nonexistent/s.obj";
+    }
+    void usageErrors() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, message);
+        QVERIFY(m_dir.isValid());
+        QDir::setCurrent(m_dir.path());
+        const Run r = resect(args);
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains(message, Qt::CaseInsensitive), qPrintable(r.err));
+        QVERIFY2(r.err.trimmed().count('\n') == 0 || message == "usage", qPrintable(r.err));
+        QVERIFY(!QFile::exists(path("x.vtu")));
+    }
+
+    void infoOfBoxMesh() {
+        TetMesh m = makeBoxTetMesh(Vec3::Zero(), Vec3(2, 2, 2), 2, 2, 2);
+        computeLumpedMasses(m, 1e-3);
+        QVERIFY(writeVtu(path("box.vtu").toStdString(), m).ok());
+        const QByteArray before = sha(path("box.vtu"));
+        const Run r = resect({"info", path("box.vtu")});
+        QCOMPARE(r.code, 0);
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(o["tets"].toInt(), 48);
+        QCOMPARE(o["nodes"].toInt(), 27);
+        QCOMPARE(o["edges"].toInt(), 98);
+        QCOMPARE(o["pieces"].toInt(), 1);
+        QVERIFY(std::abs(o["volume"].toDouble() - 8.0) < 1e-12);
+        QVERIFY(std::abs(o["mass"].toDouble() - 8e-3) < 1e-15);
+        QVERIFY(o["stable_dt"].toDouble() > 0);
+        QVERIFY(std::abs(o["volume_ratio"].toDouble() - 1.0) < 1e-9);
+        QVERIFY(o["validity"].toObject()["valid"].toBool());
+        QCOMPARE(sha(path("box.vtu")), before);
+    }
+
+    void infoReportsProblems() {
+        // A vtu whose second tet overlaps the first through a shared face (face in 3 tets).
+        TetMesh m = TetMesh::fromArrays({Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0), Vec3(0.5, 0.5, 1),
+                                         Vec3(0.5, 0.5, -1), Vec3(1.5, 0.2, 2)},
+                                        {{0, 1, 2, 3}, {0, 2, 1, 4}, {0, 1, 2, 5}});
+        QVERIFY(writeVtu(path("bad.vtu").toStdString(), m).ok());
+        const Run r = resect({"info", path("bad.vtu")});
+        QCOMPARE(r.code, 0);
+        const QJsonObject v = QJsonDocument::fromJson(r.out.toUtf8()).object()["validity"].toObject();
+        QVERIFY(!v["valid"].toBool());
+        QCOMPARE(v["by_kind"].toObject()["over_shared_face"].toInt(), 1);
+    }
+
+    void meshSampleAndReadBack_data() {
+        QTest::addColumn<QString>("sample");
+        QTest::newRow("polyp") << "polyp";
+        QTest::newRow("myoma") << "myoma";
+    }
+    void meshSampleAndReadBack() {
+        QFETCH(QString, sample);
+        const QString out = path(sample + ".vtu");
+        const Run r = resect({"mesh", "--sample", sample, "--out", out});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY(r.out.contains("tets"));
+        const Run info = resect({"info", out});
+        QCOMPARE(info.code, 0);
+        const QJsonObject o = QJsonDocument::fromJson(info.out.toUtf8()).object();
+        QVERIFY2(o["validity"].toObject()["valid"].toBool(), qPrintable(info.out));
+        QVERIFY(o["tets"].toInt() >= 100 && o["tets"].toInt() <= 5000);
+        QCOMPARE(o["pieces"].toInt(), 1);
+        QVERIFY(o["min_radius_ratio"].toDouble() > 0.05);
+    }
+
+    void meshSurfaceFileKeepsInputIntact() {
+        writeText(path("cube.obj"), kCubeVertices + kCubeFacesNoTop + kCubeTop);
+        const QByteArray before = sha(path("cube.obj"));
+        const Run r = resect({"mesh", path("cube.obj"), "--out", path("cube.vtu"), "--edge-length", "0.25"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QCOMPARE(sha(path("cube.obj")), before);
+        TetMesh m;
+        QVERIFY(readTetMesh(path("cube.vtu").toStdString(), m).ok());
+        QVERIFY(std::abs(m.totalReferenceVolume() - 1.0) < 0.03);
+        // Refuses to overwrite its input.
+        const Run same = resect({"mesh", path("cube.obj"), "--out", path("cube.obj")});
+        QCOMPARE(same.code, 2);
+        QCOMPARE(sha(path("cube.obj")), before);
+    }
+
+    void badSurfaces_data() {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QByteArray>("content");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("empty file") << "empty.obj" << QByteArray() << "empty.obj";
+        QTest::newRow("garbage") << "garbage.stl" << QByteArray("\x01\x02garbage\xff\xfe", 12) << "garbage.stl";
+        QTest::newRow("no triangles") << "points.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\n") << "triangles";
+        QTest::newRow("open surface") << "open.obj" << kCubeVertices + kCubeFacesNoTop << "border edges";
+        QTest::newRow("non-finite") << "nan.off"
+            << QByteArray("OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 nan\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n")
+            << "non-finite";
+        // Two tetrahedron surfaces sharing the edge (v1, v2): that edge is in 4 triangles.
+        QTest::newRow("non-manifold") << "nonmanifold.obj"
+            << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0 -1 0\nv 0 0 -1\n"
+                          "f 2 3 4\nf 1 4 3\nf 1 2 4\nf 1 3 2\n"
+                          "f 2 5 6\nf 1 6 5\nf 1 2 6\nf 1 5 2\n")
+            << "non-manifold";
+    }
+    void badSurfaces() {
+        QFETCH(QString, file);
+        QFETCH(QByteArray, content);
+        QFETCH(QString, message);
+        writeText(path(file), content);
+        const QByteArray before = sha(path(file));
+        const QString out = path("never.vtu");
+        const Run r = resect({"mesh", path(file), "--out", out});
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains(message, Qt::CaseInsensitive), qPrintable(r.err));
+        QCOMPARE(r.err.trimmed().count('\n'), 0);
+        QVERIFY(!QFile::exists(out));
+        QCOMPARE(sha(path(file)), before);
+        // No temporary file left behind.
+        for (const QString& name : QDir(m_dir.path()).entryList(QDir::Files | QDir::Hidden))
+            QVERIFY2(!name.contains("tmp"), qPrintable(name));
+    }
+
+    void repairClosesOpenSurface() {
+        writeText(path("open2.obj"), kCubeVertices + kCubeFacesNoTop);
+        const Run r = resect({"mesh", path("open2.obj"), "--repair", "--out", path("repaired.vtu"),
+                              "--edge-length", "0.25"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY(r.err.contains("filled 1 hole"));
+        TetMesh m;
+        QVERIFY(readTetMesh(path("repaired.vtu").toStdString(), m).ok());
+        QVERIFY(std::abs(m.totalReferenceVolume() - 1.0) < 0.05);
+    }
+
+    void unwritableOutput() {
+        const Run r = resect({"mesh", "--sample", "myoma", "--out", "/nonexistent-dir/x.vtu"});
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains("/nonexistent-dir/x.vtu"), qPrintable(r.err));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliMesh)
+#include "test_cli_mesh.moc"

@@ -1,0 +1,140 @@
+// Tests of the stable explicit time step: it bounds the spectrum, scales with size, and an
+// explicit run of the linearised mass-spring model is stable at it and unstable above it.
+#include "core/mesh/box_mesh.h"
+#include "core/mesh/masses.h"
+#include "core/mesh/stable_time_step.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <random>
+
+using namespace resect;
+
+namespace {
+
+TetMesh jitteredBox(double scale, unsigned seed, double jitter) {
+    TetMesh m = makeBoxTetMesh(Vec3::Zero(), Vec3(4, 3, 2) * scale, 4, 3, 2);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-jitter * scale, jitter * scale);
+    for (int n = 0; n < m.nodeCount(); ++n) {
+        const Vec3 p = m.ref(n);
+        const bool interior = p.x() > 0 && p.y() > 0 && p.z() > 0 && p.x() < 4 * scale &&
+                              p.y() < 3 * scale && p.z() < 2 * scale;
+        if (interior) {
+            m.referencePositions()[n] += Vec3(u(rng), u(rng), u(rng));
+            m.positions()[n] = m.ref(n);
+        }
+    }
+    computeLumpedMasses(m, Material{}.density);
+    return m;
+}
+
+/// Symplectic Euler on M x'' = -K x from a random displacement; returns max energy /
+/// initial energy over the run.
+double energyGrowth(const TetMesh& m, const Material& mat, double dt, int steps) {
+    const int n = m.nodeCount();
+    std::vector<Vec3> x(n), v(n, Vec3::Zero()), f(n);
+    std::mt19937 rng(7);
+    std::normal_distribution<double> g(0.0, 1e-3);
+    for (auto& p : x)
+        p = Vec3(g(rng), g(rng), g(rng));
+    const auto mass = m.masses();
+    auto energy = [&] {
+        applyRestStiffness(m, mat, x, f);
+        double e = 0;
+        for (int i = 0; i < n; ++i)
+            e += 0.5 * mass[i] * v[i].squaredNorm() + 0.5 * x[i].dot(f[i]);
+        return e;
+    };
+    const double e0 = energy();
+    double emax = e0;
+    for (int s = 0; s < steps; ++s) {
+        applyRestStiffness(m, mat, x, f);
+        for (int i = 0; i < n; ++i) {
+            v[i] -= dt * f[i] / mass[i];
+            x[i] += dt * v[i];
+        }
+        if (s % 50 == 49) {
+            emax = std::max(emax, energy());
+            if (!std::isfinite(emax) || emax > 1e12 * e0)
+                break;
+        }
+    }
+    return emax / e0;
+}
+
+} // namespace
+
+class TestStableTimeStep : public QObject {
+    Q_OBJECT
+private slots:
+    void estimateIsBelowGershgorin() {
+        const TetMesh m = jitteredBox(1.0, 1, 0.2);
+        const StableTimeStep s = stableTimeStep(m, Material{});
+        QVERIFY(s.dt > 0);
+        QVERIFY(s.lambdaMax > 0);
+        QVERIFY(s.lambdaMax <= s.gershgorinBound);
+        QVERIFY(s.iterations > 1);
+        QVERIFY(std::abs(s.dt - 0.95 * 2 / std::sqrt(s.lambdaMax)) < 1e-12 * s.dt);
+    }
+
+    void scalesLinearlyWithSize_data() {
+        QTest::addColumn<double>("scale");
+        QTest::newRow("1e-3") << 1e-3;
+        QTest::newRow("1e3") << 1e3;
+    }
+    void scalesLinearlyWithSize() {
+        // k_s = k (m_a + m_b) / l^2 and m ~ L^3: omega^2 ~ k / L^2, so dt ~ L / sqrt(k).
+        QFETCH(double, scale);
+        const double dt1 = stableTimeStep(jitteredBox(1.0, 3, 0.2), Material{}).dt;
+        const double dts = stableTimeStep(jitteredBox(scale, 3, 0.2), Material{}).dt;
+        QVERIFY2(std::abs(dts / dt1 - scale) < 1e-6 * scale,
+                 qPrintable(QString("%1 vs %2").arg(dts / dt1).arg(scale)));
+    }
+
+    void stiffnessAndDensityEnterAsExpected() {
+        const TetMesh m = jitteredBox(1.0, 5, 0.2);
+        Material stiff;
+        stiff.stiffness *= 4;
+        const double dt = stableTimeStep(m, Material{}).dt;
+        QVERIFY(std::abs(stableTimeStep(m, stiff).dt - dt / 2) < 1e-6 * dt);
+        // Density cancels: masses and stiffnesses both scale with it (Eq. 3 and 4).
+        TetMesh heavy = m;
+        computeLumpedMasses(heavy, 10 * Material{}.density);
+        QVERIFY(std::abs(stableTimeStep(heavy, Material{}).dt - dt) < 1e-6 * dt);
+    }
+
+    void explicitRunStableAtEstimateUnstableAbove_data() {
+        QTest::addColumn<double>("jitter");
+        QTest::addColumn<unsigned>("seed");
+        QTest::newRow("regular") << 0.0 << 1u;
+        QTest::newRow("jittered") << 0.25 << 2u;
+        QTest::newRow("strongly jittered") << 0.4 << 3u;
+    }
+    void explicitRunStableAtEstimateUnstableAbove() {
+        QFETCH(double, jitter);
+        QFETCH(unsigned, seed);
+        const TetMesh m = jitteredBox(1.0, seed, jitter);
+        const Material mat;
+        const StableTimeStep s = stableTimeStep(m, mat);
+        const double atEstimate = energyGrowth(m, mat, s.dt, 4000);
+        QVERIFY2(atEstimate < 1.5, qPrintable(QString("energy grew %1x at dt").arg(atEstimate)));
+        const double above = energyGrowth(m, mat, 1.2 * 2 / std::sqrt(s.lambdaMax), 4000);
+        QVERIFY2(above > 1e6, qPrintable(QString("energy grew only %1x above dt").arg(above)));
+    }
+
+    void sliverMeshHasSmallerStep() {
+        // Squashing one interior node towards a face shrinks edges and volumes locally.
+        TetMesh m = jitteredBox(1.0, 9, 0.0);
+        const double dt = stableTimeStep(m, Material{}).dt;
+        const int node = 1 + 5 * (1 + 4 * 1);  // interior node (1, 1, 1)
+        m.referencePositions()[node] += Vec3(0.45, 0.45, 0.45);
+        m.positions()[node] = m.ref(node);
+        computeLumpedMasses(m, Material{}.density);
+        QVERIFY(stableTimeStep(m, Material{}).dt < 0.5 * dt);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestStableTimeStep)
+#include "test_stable_time_step.moc"

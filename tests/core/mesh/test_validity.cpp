@@ -1,0 +1,164 @@
+// Tests of the validity check: each kind of problem is caught, valid meshes are clean,
+// and separated (cut) meshes with coincident nodes raise no false alarm.
+#include "core/mesh/box_mesh.h"
+#include "core/mesh/validity.h"
+
+#include <QTest>
+
+#include <algorithm>
+#include <limits>
+
+using namespace resect;
+using Kind = MeshProblem::Kind;
+
+namespace {
+
+int countKind(const std::vector<MeshProblem>& problems, Kind kind, int element = -1) {
+    return int(std::count_if(problems.begin(), problems.end(), [&](const MeshProblem& p) {
+        return p.kind == kind && (element < 0 || p.element == element);
+    }));
+}
+
+QString describe(const std::vector<MeshProblem>& problems) {
+    QStringList lines;
+    for (const auto& p : problems)
+        lines << QString::fromStdString(p.message);
+    return lines.join("; ");
+}
+
+// Face (a, b, c) in the plane z = 0, apex d above it, e below it.
+const Vec3 a(0, 0, 0), b(2, 0, 0), c(0, 2, 0), d(0.5, 0.5, 1), e(0.5, 0.5, -1);
+
+} // namespace
+
+class TestValidity : public QObject {
+    Q_OBJECT
+private slots:
+    void validMeshesAreClean_data() {
+        QTest::addColumn<double>("scale");
+        QTest::newRow("1") << 1.0;
+        QTest::newRow("1e-6") << 1e-6;
+        QTest::newRow("1e6") << 1e6;
+    }
+    void validMeshesAreClean() {
+        QFETCH(double, scale);
+        const TetMesh m = makeBoxTetMesh(Vec3::Zero(), Vec3(1, 2, 3) * scale, 3, 2, 4);
+        const auto problems = checkValidity(m);
+        QVERIFY2(problems.empty(), qPrintable(describe(problems)));
+    }
+
+    void twoTetsSharingAFace() {
+        const TetMesh m = TetMesh::fromArrays({a, b, c, d, e}, {{0, 1, 2, 3}, {0, 2, 1, 4}});
+        const auto problems = checkValidity(m);
+        QVERIFY2(problems.empty(), qPrintable(describe(problems)));
+    }
+
+    void invertedTet() {
+        TetMesh m = makeBoxTetMesh(Vec3::Zero(), Vec3(1, 1, 1), 2, 2, 2);
+        Tet t = m.tet(17);
+        std::swap(t[0], t[1]);
+        m.replaceTet(17, t);
+        const auto problems = checkValidity(m);
+        QCOMPARE(countKind(problems, Kind::InvertedTet), 1);
+        QCOMPARE(countKind(problems, Kind::InvertedTet, 17), 1);
+    }
+
+    void zeroVolumeTet() {
+        const TetMesh m = TetMesh::fromArrays({a, b, c, Vec3(1, 1, 0)}, {{0, 1, 2, 3}});
+        const auto problems = checkValidity(m);
+        QCOMPARE(countKind(problems, Kind::ZeroVolumeTet, 0), 1);
+        QCOMPARE(countKind(problems, Kind::InvertedTet), 0);
+    }
+
+    void nearlyFlatTetIsNotZero() {
+        // Exact predicates: a tiny but non-zero volume is positive, not zero.
+        const TetMesh m = TetMesh::fromArrays({a, b, c, Vec3(1, 1, 1e-300)}, {{0, 1, 2, 3}});
+        const auto problems = checkValidity(m);
+        QVERIFY2(problems.empty(), qPrintable(describe(problems)));
+    }
+
+    void nonFiniteCoordinates_data() {
+        QTest::addColumn<double>("value");
+        QTest::addColumn<bool>("reference");
+        QTest::newRow("NaN reference") << std::numeric_limits<double>::quiet_NaN() << true;
+        QTest::newRow("inf current") << std::numeric_limits<double>::infinity() << false;
+    }
+    void nonFiniteCoordinates() {
+        QFETCH(double, value);
+        QFETCH(bool, reference);
+        TetMesh m = makeBoxTetMesh(Vec3::Zero(), Vec3(1, 1, 1), 1, 1, 1);
+        if (reference)
+            m.referencePositions()[5].y() = value;
+        else
+            m.positions()[5].z() = value;
+        const auto problems = checkValidity(m);
+        QCOMPARE(countKind(problems, Kind::NonFiniteCoordinate, 5), 1);
+    }
+
+    void unusedNode() {
+        TetMesh m = makeBoxTetMesh(Vec3::Zero(), Vec3(1, 1, 1), 1, 1, 1);
+        const int n = m.addNode(Vec3(5, 5, 5), Vec3(5, 5, 5));
+        const auto problems = checkValidity(m);
+        QCOMPARE(countKind(problems, Kind::UnusedNode, n), 1);
+        QCOMPARE(int(problems.size()), 1);
+    }
+
+    void invertedInCurrentConfiguration() {
+        TetMesh m = TetMesh::fromArrays({a, b, c, d}, {{0, 1, 2, 3}});
+        m.positions()[3] = Vec3(0.5, 0.5, -1);  // apex pushed through the base
+        const auto problems = checkValidity(m);
+        QCOMPARE(countKind(problems, Kind::InvertedCurrentTet, 0), 1);
+        QCOMPARE(countKind(problems, Kind::InvertedTet), 0);
+    }
+
+    void faceSharedByThreeTets() {
+        const Vec3 d2(1.5, 0.2, 2);
+        const TetMesh m =
+            TetMesh::fromArrays({a, b, c, d, e, d2}, {{0, 1, 2, 3}, {0, 2, 1, 4}, {0, 1, 2, 5}});
+        const auto problems = checkValidity(m);
+        QCOMPARE(countKind(problems, Kind::OverSharedFace), 1);
+    }
+
+    void hangingNodeOnEdge() {
+        // Above face abc one tet; below it, abc is split at the midpoint m of ab.
+        const Vec3 mid = (a + b) / 2;
+        const TetMesh m = TetMesh::fromArrays({a, b, c, d, e, mid},
+                                              {{0, 1, 2, 3}, {0, 2, 5, 4}, {5, 2, 1, 4}});
+        for (int t = 0; t < m.tetCount(); ++t)
+            QVERIFY(m.referenceVolume(t) > 0);
+        const auto problems = checkValidity(m);
+        QVERIFY2(countKind(problems, Kind::TJunction) >= 1, qPrintable(describe(problems)));
+    }
+
+    void hangingNodeInsideFace() {
+        // Below face abc, three tets meet at its centroid g: g hangs inside abc.
+        const Vec3 g = (a + b + c) / 3;
+        const TetMesh m = TetMesh::fromArrays(
+            {a, b, c, d, e, g}, {{0, 1, 2, 3}, {0, 5, 1, 4}, {1, 5, 2, 4}, {2, 5, 0, 4}});
+        for (int t = 0; t < m.tetCount(); ++t)
+            QVERIFY(m.referenceVolume(t) > 0);
+        const auto problems = checkValidity(m);
+        QCOMPARE(countKind(problems, Kind::TJunction, 5), 1);
+    }
+
+    void separatedCoincidentNodesAreValid() {
+        // A cut along abc: the lower tet has its own copies of a, b, c at the same places,
+        // and its side of the cut is triangulated differently (split at the midpoint of ab).
+        const Vec3 mid = (a + b) / 2;
+        const TetMesh m = TetMesh::fromArrays({a, b, c, d, a, b, c, e, mid},
+                                              {{0, 1, 2, 3}, {4, 6, 8, 7}, {8, 6, 5, 7}});
+        const auto problems = checkValidity(m);
+        QVERIFY2(problems.empty(), qPrintable(describe(problems)));
+    }
+
+    void problemsNameTheElement() {
+        const TetMesh m = TetMesh::fromArrays({a, b, c, Vec3(1, 1, 0)}, {{0, 1, 2, 3}});
+        const auto problems = checkValidity(m);
+        QVERIFY(!problems.empty());
+        QVERIFY(problems[0].message.find("tet 0") != std::string::npos);
+        QCOMPARE(QString(toString(problems[0].kind)), QString("zero_volume_tet"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestValidity)
+#include "test_validity.moc"
