@@ -12,6 +12,7 @@
 // topology.h, for reporting and for setting up a simulation, not per edit.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products on Vec3 everywhere
 
 #include <array>
 #include <cstdint>

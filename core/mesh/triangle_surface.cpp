@@ -1,5 +1,7 @@
 #include "core/mesh/triangle_surface.h"
 
+#include <Eigen/Geometry>
+
 namespace resect {
 
 double enclosedVolume(const TriangleSurface& surface) {

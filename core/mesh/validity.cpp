@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <unordered_map>
 
@@ -12,11 +13,6 @@ namespace resect {
 namespace {
 
 bool finite(const Vec3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
-
-std::uint64_t directedKey(int a, int b) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-           static_cast<std::uint32_t>(b);
-}
 
 std::string tetName(int t) { return "tet " + std::to_string(t); }
 
@@ -26,14 +22,15 @@ int dominantAxis(const Vec3& n) {
     return a.x() >= a.y() ? (a.x() >= a.z() ? 0 : 2) : (a.y() >= a.z() ? 1 : 2);
 }
 
-/// True if p lies strictly inside triangle (a, b, c) (coplanarity already established).
-bool strictlyInsideTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+/// True if p lies in the closed triangle (a, b, c) (coplanarity already established; the
+/// projection drops the normal's dominant axis, so the projected triangle is not flat).
+bool inClosedTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
     const int drop = dominantAxis((b - a).cross(c - a));
     const int s = orient2dProjected(a, b, c, drop);
     if (s == 0)
         return false;
-    return orient2dProjected(a, b, p, drop) == s && orient2dProjected(b, c, p, drop) == s &&
-           orient2dProjected(c, a, p, drop) == s;
+    return orient2dProjected(a, b, p, drop) != -s && orient2dProjected(b, c, p, drop) != -s &&
+           orient2dProjected(c, a, p, drop) != -s;
 }
 
 } // namespace
@@ -95,58 +92,75 @@ std::vector<MeshProblem> checkValidity(const TetMesh& mesh) {
         if (f.tets[1] < 0)
             boundary.push_back(&f);
     }
-    // (2) The boundary of a conforming mesh is closed: every directed boundary half-edge
-    // a->b is matched by b->a. A node hanging on an edge leaves that edge unmatched.
-    std::unordered_map<std::uint64_t, int> halfEdges;
-    halfEdges.reserve(boundary.size() * 3);
-    for (const MeshFace* f : boundary)
-        for (int i = 0; i < 3; ++i)
-            halfEdges[directedKey(f->nodes[i], f->nodes[(i + 1) % 3])] += 1;
     int reported = 0;
-    for (const auto& [key, count] : halfEdges) {
-        const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
-        auto it = halfEdges.find(directedKey(b, a));
-        const int opposite = it == halfEdges.end() ? 0 : it->second;
-        if (count != opposite && (count > opposite || a < b) && reported < 1000) {
-            ++reported;
-            problems.push_back({Kind::TJunction, a,
-                                "boundary edge (" + std::to_string(a) + ", " + std::to_string(b) +
-                                    ") is not closed: a node hangs on it (T-junction)"});
-        }
-    }
-    // (3) A node hanging inside a face: the boundary faces around it close up, but fold
-    // back onto the face they should match. Detected across each boundary edge: the face on
-    // the other side is coplanar and its far corner lies strictly inside this face.
-    std::unordered_map<std::uint64_t, const MeshFace*> faceOfHalfEdge;
-    faceOfHalfEdge.reserve(boundary.size() * 3);
-    for (const MeshFace* f : boundary)
-        for (int i = 0; i < 3; ++i)
-            faceOfHalfEdge.emplace(directedKey(f->nodes[i], f->nodes[(i + 1) % 3]), f);
-    for (const MeshFace* f : boundary) {
-        const Tri& n = f->nodes;
-        if (badNode[n[0]] || badNode[n[1]] || badNode[n[2]])
-            continue;
-        for (int i = 0; i < 3; ++i) {
-            auto it = faceOfHalfEdge.find(directedKey(n[(i + 1) % 3], n[i]));
-            if (it == faceOfHalfEdge.end())
-                continue;
-            const Tri& g = it->second->nodes;
-            int far = -1;
-            for (int v : g)
-                if (v != n[i] && v != n[(i + 1) % 3])
-                    far = v;
-            if (far < 0 || badNode[far] || far == n[(i + 2) % 3])
-                continue;
-            const Vec3& p = mesh.ref(far);
-            if (orient3d(mesh.ref(n[0]), mesh.ref(n[1]), mesh.ref(n[2]), p) == 0 &&
-                strictlyInsideTriangle(p, mesh.ref(n[0]), mesh.ref(n[1]), mesh.ref(n[2])) &&
-                reported < 1000) {
-                ++reported;
-                problems.push_back({Kind::TJunction, far,
-                                    "node " + std::to_string(far) + " hangs inside face (" +
-                                        std::to_string(n[0]) + ", " + std::to_string(n[1]) + ", " +
-                                        std::to_string(n[2]) + ") (T-junction)"});
+    // (2) T-junctions. The oriented boundary of any set of positive tets is closed (the
+    // boundary of a boundary is empty), so a hanging node cannot be found topologically: it
+    // is found geometrically. A node hangs when it lies on a boundary face of its own piece
+    // (on an edge or inside, in the reference configuration) without being one of the
+    // face's corners or coinciding with one (separated cut nodes coincide by design).
+    // Candidates come from a uniform grid over the boundary faces' bounding boxes.
+    if (!boundary.empty()) {
+        const Components comp = connectedComponents(mesh);
+        std::vector<int> boundaryNodes;
+        for (const MeshFace* f : boundary)
+            for (int v : f->nodes)
+                boundaryNodes.push_back(v);
+        std::sort(boundaryNodes.begin(), boundaryNodes.end());
+        boundaryNodes.erase(std::unique(boundaryNodes.begin(), boundaryNodes.end()),
+                            boundaryNodes.end());
+        Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+        double sizeSum = 0;
+        for (const MeshFace* f : boundary) {
+            for (int v : f->nodes) {
+                if (badNode[v])
+                    continue;
+                lo = lo.cwiseMin(mesh.ref(v));
+                hi = hi.cwiseMax(mesh.ref(v));
             }
+            sizeSum += (mesh.ref(f->nodes[1]) - mesh.ref(f->nodes[0])).norm();
+        }
+        const double cell = std::max(sizeSum / boundary.size(), 1e-300);
+        const Eigen::Array3i dims =
+            (((hi - lo) / cell).array().floor().cast<int>() + 1).min(1 << 10).max(1);
+        const auto cellOf = [&](const Vec3& p) -> Eigen::Array3i {
+            const Eigen::Array3i c = ((p - lo) / cell).array().floor().cast<int>();
+            return c.max(0).min(dims - 1);
+        };
+        const auto cellIndex = [&](const Eigen::Array3i& c) {
+            return (static_cast<std::int64_t>(c.z()) * dims.y() + c.y()) * dims.x() + c.x();
+        };
+        std::unordered_map<std::int64_t, std::vector<int>> grid;
+        for (int v : boundaryNodes)
+            if (!badNode[v])
+                grid[cellIndex(cellOf(mesh.ref(v)))].push_back(v);
+        for (const MeshFace* f : boundary) {
+            const Tri& n = f->nodes;
+            if (badNode[n[0]] || badNode[n[1]] || badNode[n[2]])
+                continue;
+            const Vec3 &pa = mesh.ref(n[0]), &pb = mesh.ref(n[1]), &pc = mesh.ref(n[2]);
+            const Eigen::Array3i c0 = cellOf(pa.cwiseMin(pb).cwiseMin(pc));
+            const Eigen::Array3i c1 = cellOf(pa.cwiseMax(pb).cwiseMax(pc));
+            for (int z = c0.z(); z <= c1.z(); ++z)
+                for (int y = c0.y(); y <= c1.y(); ++y)
+                    for (int x = c0.x(); x <= c1.x(); ++x) {
+                        auto it = grid.find(cellIndex({x, y, z}));
+                        if (it == grid.end())
+                            continue;
+                        for (int v : it->second) {
+                            const Vec3& p = mesh.ref(v);
+                            if (v == n[0] || v == n[1] || v == n[2] || p == pa || p == pb ||
+                                p == pc || comp.nodeComponent[v] != comp.nodeComponent[n[0]])
+                                continue;
+                            if (orient3d(pa, pb, pc, p) != 0 || !inClosedTriangle(p, pa, pb, pc))
+                                continue;
+                            if (reported++ < 1000)
+                                problems.push_back(
+                                    {Kind::TJunction, v,
+                                     "node " + std::to_string(v) + " hangs on face (" +
+                                         std::to_string(n[0]) + ", " + std::to_string(n[1]) +
+                                         ", " + std::to_string(n[2]) + ") (T-junction)"});
+                        }
+                    }
         }
     }
     return problems;

@@ -15,7 +15,8 @@ struct MeshProblem {
         ZeroVolumeTet,        ///< exactly coplanar corners in the reference configuration
         InvertedCurrentTet,   ///< non-positive orientation in the current configuration
         OverSharedFace,       ///< a face shared by more than two tets
-        TJunction,            ///< a node hanging on an edge or inside a face of other tets
+        TJunction,            ///< a node lying on a boundary face of its own piece without
+                              ///< being (or coinciding with) one of its corners
         UnusedNode,           ///< a node in no tet
     };
     Kind kind;
