@@ -14,6 +14,16 @@ int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
     return static_cast<int>(CGAL::orientation(toCgal(a), toCgal(b), toCgal(c), toCgal(d)));
 }
 
+bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
+    return CGAL::collinear(toCgal(a), toCgal(b), toCgal(c));
+}
+
+bool trianglesIntersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
+                        const Vec3& f) {
+    const K::Triangle_3 t1(toCgal(a), toCgal(b), toCgal(c)), t2(toCgal(d), toCgal(e), toCgal(f));
+    return CGAL::do_intersect(t1, t2);
+}
+
 int orient2dProjected(const Vec3& a, const Vec3& b, const Vec3& c, int drop) {
     const int i = drop == 0 ? 1 : 0;
     const int j = drop == 2 ? 1 : 2;

@@ -11,6 +11,14 @@ namespace resect {
 /// Exact for any finite double input.
 int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
+/// True if a, b and c are exactly collinear (the triangle has zero area).
+bool collinear(const Vec3& a, const Vec3& b, const Vec3& c);
+
+/// True if the closed triangles (a, b, c) and (d, e, f) intersect (exact; both must be
+/// non-degenerate).
+bool trianglesIntersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
+                        const Vec3& f);
+
 /// Sign of the 2-D orientation of (a, b, c) after dropping coordinate `drop` (0, 1 or 2).
 int orient2dProjected(const Vec3& a, const Vec3& b, const Vec3& c, int drop);
 

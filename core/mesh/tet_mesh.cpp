@@ -59,6 +59,20 @@ void TetMesh::reserve(int nodes, int tets) {
     m_tets.reserve(tets);
 }
 
+void TetMesh::truncate(int nodes, int tets) {
+    for (int t = tetCount() - 1; t >= tets; --t)
+        detach(t);
+    m_tets.resize(std::min<std::size_t>(m_tets.size(), tets));
+    const std::size_t n = std::min<std::size_t>(m_ref.size(), nodes);
+    for (std::size_t i = n; i < m_nodeTets.size(); ++i)
+        assert(m_nodeTets[i].empty());
+    m_ref.resize(n);
+    m_pos.resize(n);
+    m_vel.resize(n);
+    m_mass.resize(n);
+    m_nodeTets.resize(n);
+}
+
 void TetMesh::attach(int t) {
     for (int v : m_tets[t]) {
         assert(v >= 0 && v < nodeCount());

@@ -74,6 +74,9 @@ public:
     /// to a duplicated node).
     void replaceTet(int t, const Tet& nodes);
     void reserve(int nodes, int tets);
+    /// Removes the trailing tets and nodes beyond the given counts (used to roll back a failed
+    /// edit). The remaining tets must not refer to removed nodes.
+    void truncate(int nodes, int tets);
 
     // --- local adjacency ---
     /// Tets incident to node n, in no particular order.

@@ -1,0 +1,551 @@
+#include "core/cut/decompose_tets.h"
+
+#include "core/mesh/predicates.h"
+#include "core/mesh/quality.h"
+#include "core/sweep/intersect_segment.h"
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+namespace resect {
+namespace {
+
+struct FaceHash {
+    std::size_t operator()(const Tri& f) const {
+        std::uint64_t h = static_cast<std::uint32_t>(f[0]);
+        h = h * 0x9E3779B97F4A7C15ull + static_cast<std::uint32_t>(f[1]);
+        h = (h ^ (h >> 29)) * 0xBF58476D1CE4E5B9ull + static_cast<std::uint32_t>(f[2]);
+        return static_cast<std::size_t>(h ^ (h >> 32));
+    }
+};
+
+/// A boundary triangle of a side polyhedron, oriented outward, with the side it belongs to
+/// and the plane it lies on: parent face 0-3, or kCutPlane for the cut polygon.
+struct SideTri {
+    Tri v;
+    int side;
+    int plane;
+};
+constexpr int kCutPlane = 4;
+
+/// Coordinates (l1, l2, l3) of x in the frame p0 + l1 (p1-p0) + l2 (p2-p0) + l3 (p3-p0).
+Vec3 barycentric(const Vec3& x, const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
+    Eigen::Matrix3d m;
+    m << p1 - p0, p2 - p0, p3 - p0;
+    return m.fullPivLu().solve(x - p0);
+}
+
+int localEdge(int x, int y) {
+    for (int e = 0; e < 6; ++e)
+        if ((kTetEdges[e][0] == x && kTetEdges[e][1] == y) || (kTetEdges[e][0] == y && kTetEdges[e][1] == x))
+            return e;
+    return -1;
+}
+
+class Decomposer {
+public:
+    Decomposer(TetMesh& mesh, const DecomposeOptions& options, Decomposition& out, CutChanges& changes)
+        : m_mesh(mesh), m_options(options), m_out(out), m_changes(changes) {}
+
+    Status decompose(const TetCut& tc);
+    /// Faces of partially cut tets keep the standard diagonal (no face node): there the
+    /// sweep ends inside the tet and a face node off the sweep could only be reached across it.
+    void excludeFaceNodes(const TetMesh& mesh, const TetCut& tc) {
+        const Tet& q = mesh.tet(tc.tet);
+        for (const auto& lf : kTetFaces) {
+            Tri key{q[lf[0]], q[lf[1]], q[lf[2]]};
+            std::sort(key.begin(), key.end());
+            m_faceNodes.emplace(key, -1);
+        }
+    }
+
+private:
+    int faceNode(const Tri& corners, const std::array<int, 4>& quad);
+    Status triangulateFace(const TetCut& tc, const std::array<int, 6>& ep, int f,
+                           std::vector<SideTri>& out);
+    Status cutPolygon(const TetCut& tc, const std::array<int, 6>& ep, std::vector<Tri>& out);
+    /// With avoidCrossing, an apex is only used if none of its new edges crosses the sweep.
+    Status cone(const std::vector<SideTri>& tris, std::vector<Tet>& tets, bool avoidCrossing = false);
+    bool coneFrom(const std::vector<SideTri>& tris, const Vec3& ref, const Vec3& pos, int node,
+                  std::vector<Tet>& tets, double minRadiusRatio = 0);
+    /// Whether `node` may be the apex for triangle t: never when it lies on t's plane
+    /// without being a corner of t. Decided from the construction (which parent faces, or
+    /// the cut polygon, a vertex lies on), not from rounded coordinates, where a constructed
+    /// point is only nearly coplanar and would give an almost flat tet.
+    bool onPlaneOf(int node, const SideTri& t) const {
+        auto it = m_planes.find(node);
+        return it != m_planes.end() && (it->second >> t.plane & 1);
+    }
+    int sideOfVertex(const TetCut& tc, int node) const;
+
+    TetMesh& m_mesh;
+    const DecomposeOptions& m_options;
+    Decomposition& m_out;
+    CutChanges& m_changes;
+    std::unordered_map<Tri, int, FaceHash> m_faceNodes;
+    std::unordered_map<int, std::uint8_t> m_planes;  ///< planes each vertex of the current tet lies on
+    std::vector<int> m_scratch;
+};
+
+int Decomposer::faceNode(const Tri& corners, const std::array<int, 4>& quad) {
+    Tri key = corners;
+    std::sort(key.begin(), key.end());
+    auto it = m_faceNodes.find(key);
+    if (it != m_faceNodes.end())
+        return it->second;
+    // Section 4.4: the mean of the four corners of the face prism, in both configurations.
+    Vec3 ref = Vec3::Zero(), pos = Vec3::Zero(), vel = Vec3::Zero();
+    for (int v : quad) {
+        ref += m_mesh.ref(v) / 4.0;
+        pos += m_mesh.pos(v) / 4.0;
+        vel += m_mesh.velocities()[v] / 4.0;
+    }
+    // A curved sweep may bulge past the chord between the split points into the prism; a
+    // face node whose spokes would cross it is not used (the face gets the diagonal).
+    if (m_options.sweep) {
+        SegmentQuery query;
+        for (int v : quad) {
+            intersectSegment(*m_options.sweep, pos, m_mesh.pos(v), query, m_scratch);
+            if (query.hits.size() % 2 == 1) {
+                m_faceNodes.emplace(key, -1);
+                return -1;
+            }
+        }
+    }
+    const int n = m_mesh.addNode(ref, pos);
+    m_mesh.velocities()[n] = vel;
+    m_faceNodes.emplace(key, n);
+    ++m_out.faceNodes;
+    return n;
+}
+
+int Decomposer::sideOfVertex(const TetCut& tc, int node) const {
+    const Tet& q = m_mesh.tet(tc.tet);
+    for (int i = 0; i < 4; ++i)
+        if (q[i] == node)
+            return tc.side[i];
+    return 0;
+}
+
+Status Decomposer::triangulateFace(const TetCut& tc, const std::array<int, 6>& ep, int f,
+                                   std::vector<SideTri>& out) {
+    const Tet& q = m_mesh.tet(tc.tet);
+    const auto& lf = kTetFaces[f];
+    // The face's boundary cycle in outward order, with split points inserted.
+    std::vector<int> cycle;
+    std::vector<char> original;
+    for (int s = 0; s < 3; ++s) {
+        const int x = lf[s], y = lf[(s + 1) % 3];
+        cycle.push_back(q[x]);
+        original.push_back(1);
+        const int p = ep[localEdge(x, y)];
+        if (p >= 0) {
+            cycle.push_back(p);
+            original.push_back(0);
+        }
+    }
+    const int n = static_cast<int>(cycle.size());
+    const auto at = [&](int i) { return cycle[((i % n) + n) % n]; };
+    const auto isOriginal = [&](int i) { return original[((i % n) + n) % n] != 0; };
+    // Side of a triangle in a completely cut tet: that of its first non-cut original node.
+    const auto sideOf = [&](const Tri& t) {
+        if (tc.partial)
+            return 0;
+        for (int v : t) {
+            const int s = sideOfVertex(tc, v);
+            if (s != 0)
+                return s;
+        }
+        return 0;
+    };
+    const auto emit = [&](const Tri& t, int side) { out.push_back({t, side, f}); };
+
+    switch (n) {
+    case 3:
+        emit({cycle[0], cycle[1], cycle[2]}, sideOf({cycle[0], cycle[1], cycle[2]}));
+        break;
+    case 4: {  // one split edge: fan from the opposite corner
+        int ip = 0;
+        while (isOriginal(ip))
+            ++ip;
+        const Tri t1{at(ip + 2), at(ip - 1), at(ip)}, t2{at(ip + 2), at(ip), at(ip + 1)};
+        emit(t1, sideOf(t1));
+        emit(t2, sideOf(t2));
+        break;
+    }
+    case 5: {  // two split edges: corner triangle plus the face prism (a quadrilateral)
+        int c = 0;
+        while (!(isOriginal(c) && !isOriginal(c - 1) && !isOriginal(c + 1)))
+            ++c;
+        const Tri corner{at(c - 1), at(c), at(c + 1)};
+        const std::array<int, 4> quad{at(c + 1), at(c + 2), at(c + 3), at(c + 4)};
+        const int quadSide = tc.partial ? 0 : sideOfVertex(tc, quad[1]);
+        emit(corner, tc.partial ? 0 : sideOfVertex(tc, corner[1]));
+        const int fn = m_options.symmetricFaces ? faceNode({q[lf[0]], q[lf[1]], q[lf[2]]}, quad) : -1;
+        if (fn >= 0) {
+            m_planes[fn] = static_cast<std::uint8_t>(1 << f);
+            for (int k = 0; k < 4; ++k)
+                emit({quad[k], quad[(k + 1) % 4], fn}, quadSide);
+        } else {
+            // Diagonal through the quad's smallest global index: both tets sharing the face
+            // see the same indices, so they choose the same diagonal.
+            const int smallest = static_cast<int>(std::min_element(quad.begin(), quad.end()) - quad.begin());
+            const int d = smallest % 2;
+            emit({quad[d], quad[d + 1], quad[(d + 2) % 4]}, quadSide);
+            emit({quad[d], quad[(d + 2) % 4], quad[(d + 3) % 4]}, quadSide);
+        }
+        break;
+    }
+    case 6: {  // all three edges split (only in partially cut tets): four triangles
+        if (!tc.partial)
+            return Status::error("tet " + std::to_string(tc.tet) + ": a face has three split edges in a complete cut");
+        int s = 0;
+        while (!isOriginal(s))
+            ++s;
+        emit({at(s), at(s + 1), at(s + 5)}, 0);
+        emit({at(s + 1), at(s + 2), at(s + 3)}, 0);
+        emit({at(s + 3), at(s + 4), at(s + 5)}, 0);
+        emit({at(s + 1), at(s + 3), at(s + 5)}, 0);
+        break;
+    }
+    default:
+        return Status::error("tet " + std::to_string(tc.tet) + ": bad face cycle");
+    }
+    return Status::success();
+}
+
+Status Decomposer::cutPolygon(const TetCut& tc, const std::array<int, 6>& ep, std::vector<Tri>& out) {
+    const Tet& q = m_mesh.tet(tc.tet);
+    // Cut vertices and the faces they lie on: a cut node lies on the three faces that
+    // contain it, a split point on the two faces containing its edge.
+    std::vector<int> verts;
+    std::vector<std::array<bool, 4>> onFace;
+    for (int i = 0; i < 4; ++i)
+        if (tc.nodeCode >> i & 1) {
+            verts.push_back(q[i]);
+            std::array<bool, 4> f{true, true, true, true};
+            f[i] = false;
+            onFace.push_back(f);
+        }
+    for (int e = 0; e < 6; ++e)
+        if (ep[e] >= 0) {
+            verts.push_back(ep[e]);
+            std::array<bool, 4> f{true, true, true, true};
+            f[kTetEdges[e][0]] = f[kTetEdges[e][1]] = false;
+            onFace.push_back(f);
+        }
+    const int n = static_cast<int>(verts.size());
+    if (n < 3 || n > 4)
+        return Status::error("tet " + std::to_string(tc.tet) + ": cut polygon with " + std::to_string(n) + " corners");
+    // Polygon edges: pairs of cut vertices sharing a face.
+    std::vector<std::vector<int>> adj(n);
+    for (int f = 0; f < 4; ++f) {
+        std::vector<int> on;
+        for (int k = 0; k < n; ++k)
+            if (onFace[k][f])
+                on.push_back(k);
+        if (on.size() > 2)
+            return Status::error("tet " + std::to_string(tc.tet) + ": face with more than two cut vertices");
+        if (on.size() == 2) {
+            auto& a = adj[on[0]];
+            if (std::find(a.begin(), a.end(), on[1]) == a.end()) {
+                a.push_back(on[1]);
+                adj[on[1]].push_back(on[0]);
+            }
+        }
+    }
+    std::vector<int> order{0};
+    for (int prev = -1, cur = 0; static_cast<int>(order.size()) < n;) {
+        if (adj[cur].size() != 2)
+            return Status::error("tet " + std::to_string(tc.tet) + ": cut polygon is not a cycle");
+        const int next = adj[cur][0] != prev ? adj[cur][0] : adj[cur][1];
+        prev = cur;
+        cur = next;
+        order.push_back(cur);
+    }
+    if (n == 3) {
+        out.push_back({verts[order[0]], verts[order[1]], verts[order[2]]});
+    } else {
+        const int c0 = verts[order[0]], c1 = verts[order[1]], c2 = verts[order[2]], c3 = verts[order[3]];
+        const double d02 = (m_mesh.ref(c0) - m_mesh.ref(c2)).squaredNorm();
+        const double d13 = (m_mesh.ref(c1) - m_mesh.ref(c3)).squaredNorm();
+        if (d02 <= d13) {
+            out.push_back({c0, c1, c2});
+            out.push_back({c0, c2, c3});
+        } else {
+            out.push_back({c1, c2, c3});
+            out.push_back({c1, c3, c0});
+        }
+    }
+    return Status::success();
+}
+
+Status Decomposer::cone(const std::vector<SideTri>& tris, std::vector<Tet>& tets, bool avoidCrossing) {
+    std::vector<int> verts;
+    for (const SideTri& t : tris)
+        verts.insert(verts.end(), t.v.begin(), t.v.end());
+    std::sort(verts.begin(), verts.end());
+    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+
+    const auto behind = [&](const Tri& t, const Vec3& cr, const Vec3& cp) {
+        return orient3d(m_mesh.ref(t[0]), m_mesh.ref(t[1]), m_mesh.ref(t[2]), cr) < 0 &&
+               orient3d(m_mesh.pos(t[0]), m_mesh.pos(t[1]), m_mesh.pos(t[2]), cp) < 0;
+    };
+    const auto contains = [](const Tri& t, int v) { return t[0] == v || t[1] == v || t[2] == v; };
+
+    // Candidates ordered by how many tets their cone makes.
+    std::vector<std::pair<int, int>> candidates;  // (count, vertex)
+    for (int v : verts) {
+        int count = 0;
+        for (const SideTri& t : tris)
+            count += contains(t.v, v) ? 0 : 1;
+        candidates.push_back({count, v});
+    }
+    std::sort(candidates.begin(), candidates.end());
+    int best = -1, bestCount = std::numeric_limits<int>::max();
+    double bestQuality = -1;
+    for (const auto& [count, v] : candidates) {
+        if (count > bestCount)
+            break;
+        bool valid = true;
+        double quality = std::numeric_limits<double>::infinity();
+        for (const SideTri& st : tris) {
+            const Tri& t = st.v;
+            if (contains(t, v))
+                continue;
+            if (onPlaneOf(v, st) || !behind(t, m_mesh.ref(v), m_mesh.pos(v))) {
+                valid = false;
+                break;
+            }
+            quality = std::min(quality, tetQuality(m_mesh.ref(t[0]), m_mesh.ref(t[2]), m_mesh.ref(t[1]),
+                                                   m_mesh.ref(v)).radiusRatio);
+        }
+        if (valid && avoidCrossing && m_options.sweep) {
+            SegmentQuery query;
+            for (int u : verts) {
+                if (u == v)
+                    continue;
+                intersectSegment(*m_options.sweep, m_mesh.pos(v), m_mesh.pos(u), query, m_scratch);
+                if (query.hits.size() % 2 == 1) {
+                    valid = false;
+                    break;
+                }
+            }
+        }
+        if (valid && quality > bestQuality) {
+            best = v;
+            bestCount = count;
+            bestQuality = quality;
+        }
+    }
+    int apex = best;
+    if (apex < 0 && avoidCrossing)
+        return Status::error("no apex avoids the sweep");
+    if (apex < 0) {
+        // No vertex sees every face: an interior point at the vertices' mean.
+        Vec3 ref = Vec3::Zero(), pos = Vec3::Zero(), vel = Vec3::Zero();
+        for (int v : verts) {
+            ref += m_mesh.ref(v);
+            pos += m_mesh.pos(v);
+            vel += m_mesh.velocities()[v];
+        }
+        ref /= static_cast<double>(verts.size());
+        pos /= static_cast<double>(verts.size());
+        vel /= static_cast<double>(verts.size());
+        for (const SideTri& t : tris)
+            if (!behind(t.v, ref, pos))
+                return Status::error("a cut polyhedron cannot be split into positive tets");
+        apex = m_mesh.addNode(ref, pos);
+        m_mesh.velocities()[apex] = vel;
+        ++m_out.steinerPoints;
+    }
+    for (const SideTri& t : tris)
+        if (!contains(t.v, apex))
+            tets.push_back({t.v[0], t.v[2], t.v[1], apex});
+    return Status::success();
+}
+
+bool Decomposer::coneFrom(const std::vector<SideTri>& tris, const Vec3& ref, const Vec3& pos, int node,
+                          std::vector<Tet>& tets, double minRadiusRatio) {
+    for (const SideTri& st : tris) {
+        const Tri& t = st.v;
+        if (t[0] == node || t[1] == node || t[2] == node)
+            continue;
+        if ((node >= 0 && onPlaneOf(node, st)) ||
+            !(orient3d(m_mesh.ref(t[0]), m_mesh.ref(t[1]), m_mesh.ref(t[2]), ref) < 0 &&
+              orient3d(m_mesh.pos(t[0]), m_mesh.pos(t[1]), m_mesh.pos(t[2]), pos) < 0))
+            return false;
+        if (minRadiusRatio > 0 &&
+            tetQuality(m_mesh.ref(t[0]), m_mesh.ref(t[2]), m_mesh.ref(t[1]), ref).radiusRatio < minRadiusRatio)
+            return false;
+    }
+    if (node < 0) {
+        node = m_mesh.addNode(ref, pos);
+        ++m_out.steinerPoints;
+    }
+    for (const SideTri& st : tris) {
+        const Tri& t = st.v;
+        if (t[0] != node && t[1] != node && t[2] != node)
+            tets.push_back({t[0], t[2], t[1], node});
+    }
+    return true;
+}
+
+Status Decomposer::decompose(const TetCut& tc) {
+    const Tet parent = m_mesh.tet(tc.tet);
+    if (tc.scheme == Scheme::Z || tc.scheme == Scheme::Touch) {
+        int side = 0;
+        for (int i = 0; i < 4 && side == 0; ++i)
+            side = tc.side[i];
+        m_out.tetSide[tc.tet] = static_cast<std::int8_t>(side);
+        return Status::success();
+    }
+    std::array<int, 6> ep;
+    for (int e = 0; e < 6; ++e) {
+        ep[e] = -1;
+        if (tc.edgeCode >> e & 1)
+            ep[e] = m_out.edgePoint.at(edgeKey(parent[kTetEdges[e][0]], parent[kTetEdges[e][1]]));
+    }
+    // Planes each vertex lies on: node i on the three faces other than face i, a split point
+    // on the two faces containing its edge; cut nodes and (in complete cuts) split points
+    // also on the cut polygon. Face nodes are added as they are made.
+    m_planes.clear();
+    for (int i = 0; i < 4; ++i) {
+        std::uint8_t mask = static_cast<std::uint8_t>(0xF & ~(1 << i));
+        if (tc.nodeCode >> i & 1)
+            mask |= 1 << kCutPlane;
+        m_planes[parent[i]] = mask;
+    }
+    for (int e = 0; e < 6; ++e)
+        if (ep[e] >= 0)
+            m_planes[ep[e]] = static_cast<std::uint8_t>((0xF & ~(1 << kTetEdges[e][0]) & ~(1 << kTetEdges[e][1])) |
+                                                        (tc.partial ? 0 : 1 << kCutPlane));
+    std::vector<SideTri> faceTris;
+    for (int f = 0; f < 4; ++f)
+        if (Status s = triangulateFace(tc, ep, f, faceTris); !s.ok())
+            return s;
+
+    std::vector<std::pair<Tet, int>> result;  // sub-tet and its side
+    if (tc.partial) {
+        const std::vector<SideTri>& tris = faceTris;
+        // The sweep ends inside this tet and the crack stays closed here. The cone apex is
+        // put on the sweep, so that no new edge crosses it.
+        std::vector<int> points;
+        for (int e = 0; e < 6; ++e)
+            if (ep[e] >= 0)
+                points.push_back(ep[e]);
+        std::vector<Tet> tets;
+        bool done = false;
+        if (points.size() == 1)
+            done = coneFrom(tris, m_mesh.ref(points[0]), m_mesh.pos(points[0]), points[0], tets);
+        // Otherwise a new interior point on the sweep: tried at the mean of the split points,
+        // then half-way towards the tet's centre and at the centre (each projected onto the
+        // sweep; its reference position from barycentric coordinates in the parent tet).
+        Vec3 meanPos = Vec3::Zero(), centre = Vec3::Zero(), vel = Vec3::Zero();
+        for (int p : points) {
+            meanPos += m_mesh.pos(p) / static_cast<double>(points.size());
+            vel += m_mesh.velocities()[p] / static_cast<double>(points.size());
+        }
+        for (int v : parent)
+            centre += m_mesh.pos(v) / 4.0;
+        for (const double floor : {m_options.minSteinerRadiusRatio, m_options.minSteinerRadiusRatio / 20})
+            for (const Vec3& guess : {meanPos, Vec3(0.5 * (meanPos + centre)), centre}) {
+                if (done || points.size() < 2)
+                    break;
+                const Vec3 onSweep = m_options.sweep ? m_options.sweep->closestPoint(guess).point : guess;
+                const Vec3 b = barycentric(onSweep, m_mesh.pos(parent[0]), m_mesh.pos(parent[1]),
+                                           m_mesh.pos(parent[2]), m_mesh.pos(parent[3]));
+                if (!b.allFinite())
+                    continue;
+                const Vec3 ref = m_mesh.ref(parent[0]) + b[0] * (m_mesh.ref(parent[1]) - m_mesh.ref(parent[0])) +
+                                 b[1] * (m_mesh.ref(parent[2]) - m_mesh.ref(parent[0])) +
+                                 b[2] * (m_mesh.ref(parent[3]) - m_mesh.ref(parent[0]));
+                const int before = m_mesh.nodeCount();
+                if (coneFrom(tris, ref, onSweep, -1, tets, floor)) {
+                    done = true;
+                    m_mesh.velocities()[before] = vel;
+                    m_out.sweepPoints.push_back(before);
+                }
+            }
+        if (!done)
+            done = cone(tris, tets, /*avoidCrossing=*/true).ok();
+        if (!done)
+            if (Status s = cone(tris, tets); !s.ok())
+                return Status::error("tet " + std::to_string(tc.tet) + ": " + s.message());
+        for (const Tet& t : tets)
+            result.push_back({t, 0});
+    } else {
+        std::vector<Tri> cut;
+        if (Status s = cutPolygon(tc, ep, cut); !s.ok())
+            return s;
+        for (int side : {1, -1}) {
+            int representative = -1;
+            for (int i = 0; i < 4; ++i)
+                if (tc.side[i] == side)
+                    representative = parent[i];
+            if (representative < 0)
+                return Status::error("tet " + std::to_string(tc.tet) + ": a side without nodes");
+            std::vector<SideTri> tris;
+            for (const SideTri& t : faceTris) {
+                if (t.side == 0)
+                    return Status::error("tet " + std::to_string(tc.tet) + ": a face triangle on no side");
+                if (t.side == side)
+                    tris.push_back(t);
+            }
+            for (Tri t : cut) {
+                const int o = orient3d(m_mesh.ref(t[0]), m_mesh.ref(t[1]), m_mesh.ref(t[2]),
+                                       m_mesh.ref(representative));
+                if (o == 0)
+                    return Status::error("tet " + std::to_string(tc.tet) + ": flat cut polygon");
+                if (o > 0)
+                    std::swap(t[1], t[2]);
+                tris.push_back({t, side, kCutPlane});
+            }
+            std::vector<Tet> tets;
+            if (Status s = cone(tris, tets); !s.ok())
+                return Status::error("tet " + std::to_string(tc.tet) + ": " + s.message());
+            for (const Tet& t : tets)
+                result.push_back({t, side});
+        }
+    }
+    // The first sub-tet takes the parent's place; the others are appended.
+    m_changes.modifiedTets.push_back(tc.tet);
+    m_mesh.replaceTet(tc.tet, result[0].first);
+    m_out.tetSide[tc.tet] = static_cast<std::int8_t>(result[0].second);
+    for (std::size_t k = 1; k < result.size(); ++k) {
+        const int t = m_mesh.addTet(result[k].first);
+        m_changes.parentOfNewTet.push_back(tc.tet);
+        m_out.tetSide[t] = static_cast<std::int8_t>(result[k].second);
+    }
+    ++m_out.decomposedTets;
+    return Status::success();
+}
+
+} // namespace
+
+Status decomposeTets(TetMesh& mesh, const CutSelection& selection, const DecomposeOptions& options,
+                     Decomposition& out, CutChanges& changes) {
+    // Split points on the cut edges: Eq. 1, the crossing parameter t of the deformed
+    // configuration applied to the reference positions (and velocities).
+    for (const EdgeCrossing& c : selection.cutEdges) {
+        const double t = c.hit.t;
+        const Vec3 ref = mesh.ref(c.a) + t * (mesh.ref(c.b) - mesh.ref(c.a));
+        const Vec3 pos = mesh.pos(c.a) + t * (mesh.pos(c.b) - mesh.pos(c.a));
+        const int n = mesh.addNode(ref, pos);
+        mesh.velocities()[n] = (1 - t) * mesh.velocities()[c.a] + t * mesh.velocities()[c.b];
+        out.edgePoint.emplace(edgeKey(c.a, c.b), n);
+    }
+    Decomposer decomposer(mesh, options, out, changes);
+    for (const TetCut& tc : selection.tets)
+        if (tc.partial)
+            decomposer.excludeFaceNodes(mesh, tc);
+    for (const TetCut& tc : selection.tets)
+        if (Status s = decomposer.decompose(tc); !s.ok())
+            return s;
+    return Status::success();
+}
+
+} // namespace resect

@@ -1,0 +1,136 @@
+#include "core/cut/hybrid_cutter.h"
+
+#include "core/cut/decompose_tets.h"
+#include "core/cut/intersect_edges.h"
+#include "core/cut/select_cut_nodes.h"
+#include "core/cut/separate.h"
+#include "core/mesh/quality.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <unordered_set>
+
+namespace resect {
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+} // namespace
+
+HybridCutter::HybridCutter(TetMesh& mesh) : m_mesh(mesh) {
+    m_grid.build(mesh);
+    m_meanEdge = resect::meanEdgeLength(mesh);
+}
+
+void HybridCutter::refreshSpatialIndex() { m_grid.build(m_mesh); }
+
+Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, CutResult& result) {
+    if (!std::isfinite(options.d) || options.d < 0 || options.d > 0.5)
+        return Status::error("d must be in [0, 0.5] (a fraction of the mean edge length), got " +
+                             std::to_string(options.d));
+    if (!(options.minEdgeFraction > 0) || options.minEdgeFraction > 0.01)
+        return Status::error("minEdgeFraction must be in (0, 0.01]");
+    if (sweep.triangles().empty())
+        return Status::error("empty sweep surface");
+    result = {};
+    CutStats& stats = result.stats;
+    CutChanges& changes = result.changes;
+    const int nodesBefore = m_mesh.nodeCount();
+    const int tetsBefore = m_mesh.tetCount();
+    changes.firstNewNode = nodesBefore;
+    changes.firstNewTet = tetsBefore;
+    const auto start = std::chrono::steady_clock::now();
+
+    auto t0 = std::chrono::steady_clock::now();
+    const IntersectedEdges crossed = intersectEdges(m_mesh, m_grid, sweep);
+    stats.timeMs.intersect = msSince(t0);
+    stats.crossedEdges = static_cast<int>(crossed.edges.size());
+    stats.discardedEdges = crossed.discardedEdges;
+
+    t0 = std::chrono::steady_clock::now();
+    SelectOptions select;
+    const bool hybrid = options.method == CutMethod::Hybrid;
+    select.allowCutNodes = hybrid;
+    select.d = hybrid ? options.d * m_meanEdge : 0.0;
+    select.minEdgeFraction = options.minEdgeFraction;
+    const CutSelection selection = selectCutNodes(m_mesh, sweep, crossed, select);
+    stats.timeMs.select = msSince(t0);
+    stats.cutNodes = static_cast<int>(selection.cutNodes.size());
+    stats.cutEdges = static_cast<int>(selection.cutEdges.size());
+    stats.maxCutNodeDistance = selection.maxCutNodeDistance;
+    for (const TetCut& tc : selection.tets)
+        ++stats.schemeCount[static_cast<int>(tc.scheme)];
+    changes.cutNodes = selection.cutNodes;
+
+    // Keep what is needed to roll back: the nodes of every tet that may change.
+    std::unordered_set<int> mayChange;
+    for (const TetCut& tc : selection.tets)
+        mayChange.insert(tc.tet);
+    for (int n : selection.cutNodes)
+        mayChange.insert(m_mesh.nodeTets(n).begin(), m_mesh.nodeTets(n).end());
+    std::vector<std::pair<int, Tet>> backup;
+    backup.reserve(mayChange.size());
+    for (int t : mayChange)
+        backup.push_back({t, m_mesh.tet(t)});
+    const auto rollback = [&] {
+        for (const auto& [t, q] : backup)
+            m_mesh.replaceTet(t, q);
+        m_mesh.truncate(nodesBefore, tetsBefore);
+    };
+
+    t0 = std::chrono::steady_clock::now();
+    DecomposeOptions decompose;
+    decompose.symmetricFaces = hybrid && options.triangulation == FaceTriangulation::Enhanced;
+    decompose.sweep = &sweep;
+    Decomposition decomposition;
+    if (Status s = decomposeTets(m_mesh, selection, decompose, decomposition, changes); !s.ok()) {
+        rollback();
+        return Status::error("cut failed, mesh unchanged: " + s.message());
+    }
+    const Separation separation = separate(m_mesh, selection, decomposition, changes);
+    stats.timeMs.decompose = msSince(t0);
+    stats.decomposedTets = decomposition.decomposedTets;
+    stats.steinerPoints = decomposition.steinerPoints;
+    stats.faceNodes = decomposition.faceNodes;
+    stats.separatedTets = separation.separatedTets;
+    stats.duplicatedNodes = separation.duplicatedNodes;
+
+    // Change list: modified tets once, cut-surface nodes, nodes whose tets changed.
+    std::sort(changes.modifiedTets.begin(), changes.modifiedTets.end());
+    changes.modifiedTets.erase(std::unique(changes.modifiedTets.begin(), changes.modifiedTets.end()),
+                               changes.modifiedTets.end());
+    for (int n : selection.cutNodes)
+        changes.cutSurfaceNodes.push_back(n);
+    for (const auto& [key, n] : decomposition.edgePoint)
+        changes.cutSurfaceNodes.push_back(n);
+    for (const auto& [orig, copy] : changes.duplicatedNodes)
+        changes.cutSurfaceNodes.push_back(copy);
+    for (int n : decomposition.sweepPoints)
+        changes.cutSurfaceNodes.push_back(n);
+    std::sort(changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end());
+    changes.cutSurfaceNodes.erase(std::unique(changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end()),
+                                  changes.cutSurfaceNodes.end());
+    std::unordered_set<int> touched;
+    for (int t : changes.modifiedTets)
+        touched.insert(m_mesh.tet(t).begin(), m_mesh.tet(t).end());
+    for (int t = tetsBefore; t < m_mesh.tetCount(); ++t)
+        touched.insert(m_mesh.tet(t).begin(), m_mesh.tet(t).end());
+    for (const auto& [orig, copy] : changes.duplicatedNodes)
+        touched.insert(orig);
+    changes.touchedNodes.assign(touched.begin(), touched.end());
+    std::sort(changes.touchedNodes.begin(), changes.touchedNodes.end());
+
+    for (int t = tetsBefore; t < m_mesh.tetCount(); ++t)
+        m_grid.insert(m_mesh, t);
+    stats.addedTets = m_mesh.tetCount() - tetsBefore;
+    stats.addedNodes = m_mesh.nodeCount() - nodesBefore;
+    stats.touchedTets = static_cast<int>(crossed.candidateTets.size() + stats.addedTets);
+    stats.timeMs.total = msSince(start);
+    return Status::success();
+}
+
+} // namespace resect

@@ -1,0 +1,74 @@
+#pragma once
+// HybridCutter: the cut of section 4.1, one step per file, in the paper's order:
+//   intersect_edges -> select_cut_nodes -> decompose_tets -> separate
+//   (-> snap_nodes -> relax_nodes -> update_rest_state, see the snapping issue).
+// The subdivision baseline (Bielser et al. 1999, the paper's ref. [3]) is the same pipeline
+// with no cut nodes chosen by distance and the standard face triangulation.
+
+#include "core/cut/cut_types.h"
+#include "core/mesh/tet_grid.h"
+#include "core/status.h"
+#include "core/sweep/sweep_surface.h"
+
+namespace resect {
+
+enum class CutMethod { Hybrid, Subdivision };
+enum class FaceTriangulation { Standard, Enhanced };
+
+struct CutOptions {
+    CutMethod method = CutMethod::Hybrid;
+    FaceTriangulation triangulation = FaceTriangulation::Enhanced;
+    /// Cut-node threshold as a fraction of the mean edge length (the paper: one fifth).
+    double d = 0.2;
+    /// Smallest fraction of an edge a split may cut off (see select_cut_nodes.h).
+    double minEdgeFraction = 1e-6;
+};
+
+/// Counts and timings of one cut (the "cut" object of the cut report, DESIGN.md).
+struct CutStats {
+    int crossedEdges = 0;
+    int discardedEdges = 0;
+    int cutEdges = 0;
+    int cutNodes = 0;
+    int snappedNodes = 0;
+    int refusedSnaps = 0;
+    int decomposedTets = 0;
+    int separatedTets = 0;
+    int duplicatedNodes = 0;
+    int addedTets = 0;
+    int addedNodes = 0;
+    int steinerPoints = 0;
+    int faceNodes = 0;
+    int touchedTets = 0;  ///< tets examined or changed by the cut
+    double maxCutNodeDistance = 0;
+    std::array<int, 10> schemeCount{};  ///< indexed by Scheme
+    struct {
+        double intersect = 0, select = 0, decompose = 0, snap = 0, relax = 0, update = 0, total = 0;
+    } timeMs;
+};
+
+struct CutResult {
+    CutStats stats;
+    CutChanges changes;
+};
+
+class HybridCutter {
+public:
+    /// Keeps a reference to the mesh; builds the spatial grid and the mean edge length
+    /// (the unit of d) once, in O(mesh).
+    explicit HybridCutter(TetMesh& mesh);
+
+    /// Rebuilds the spatial grid after positions changed (e.g. after simulation steps).
+    void refreshSpatialIndex();
+    double meanEdgeLength() const { return m_meanEdge; }
+
+    /// Cuts the mesh along the sweep. On failure the mesh is left exactly as it was.
+    Status cut(const SweepSurface& sweep, const CutOptions& options, CutResult& result);
+
+private:
+    TetMesh& m_mesh;
+    TetGrid m_grid;
+    double m_meanEdge = 0;
+};
+
+} // namespace resect

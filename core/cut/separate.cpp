@@ -1,0 +1,93 @@
+#include "core/cut/separate.h"
+
+#include <algorithm>
+#include <numeric>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace resect {
+
+Separation separate(TetMesh& mesh, const CutSelection& selection, const Decomposition& decomposition,
+                    CutChanges& changes) {
+    Separation result;
+    std::vector<int> cutVertices = selection.cutNodes;
+    for (const auto& [key, node] : decomposition.edgePoint)
+        cutVertices.push_back(node);
+    std::sort(cutVertices.begin(), cutVertices.end());
+    const std::unordered_set<int> isCut(cutVertices.begin(), cutVertices.end());
+    const auto sideOfTet = [&](int t) {
+        auto it = decomposition.tetSide.find(t);
+        return it == decomposition.tetSide.end() ? 0 : static_cast<int>(it->second);
+    };
+
+    std::unordered_set<int> separatedTets;
+    for (int v : cutVertices) {
+        const std::vector<int> star(mesh.nodeTets(v).begin(), mesh.nodeTets(v).end());
+        const int n = static_cast<int>(star.size());
+        std::vector<int> parent(n);
+        std::iota(parent.begin(), parent.end(), 0);
+        const auto find = [&](int x) {
+            while (parent[x] != x)
+                x = parent[x] = parent[parent[x]];
+            return x;
+        };
+        // Faces containing v, keyed by their other two nodes.
+        std::unordered_map<std::uint64_t, int> firstTetOfFace;
+        for (int k = 0; k < n; ++k) {
+            const Tet& q = mesh.tet(star[k]);
+            for (int i = 0; i < 4; ++i) {
+                if (q[i] == v)
+                    continue;
+                for (int j = i + 1; j < 4; ++j) {
+                    if (q[j] == v)
+                        continue;
+                    const std::uint64_t key = edgeKey(q[i], q[j]);
+                    auto [it, inserted] = firstTetOfFace.try_emplace(key, k);
+                    if (inserted)
+                        continue;
+                    const int other = it->second;
+                    const int s1 = sideOfTet(star[k]), s2 = sideOfTet(star[other]);
+                    const bool cutFace = s1 != 0 && s2 != 0 && s1 != s2 && isCut.count(q[i]) &&
+                                         isCut.count(q[j]);
+                    if (!cutFace)
+                        parent[find(k)] = find(other);
+                }
+            }
+        }
+        // One copy of v per extra group; the group of the first tet on the + side keeps v.
+        std::unordered_map<int, int> nodeOfGroup;
+        int keeper = -1;
+        for (int k = 0; k < n && keeper < 0; ++k)
+            if (sideOfTet(star[k]) > 0)
+                keeper = find(k);
+        if (keeper < 0)
+            keeper = find(0);
+        nodeOfGroup[keeper] = v;
+        for (int k = 0; k < n; ++k) {
+            const int g = find(k);
+            auto it = nodeOfGroup.find(g);
+            int node;
+            if (it == nodeOfGroup.end()) {
+                node = mesh.addNode(mesh.ref(v), mesh.pos(v));
+                mesh.velocities()[node] = mesh.velocities()[v];
+                nodeOfGroup.emplace(g, node);
+                changes.duplicatedNodes.push_back({v, node});
+                ++result.duplicatedNodes;
+            } else {
+                node = it->second;
+            }
+            if (node == v)
+                continue;
+            Tet q = mesh.tet(star[k]);
+            std::replace(q.begin(), q.end(), v, node);
+            mesh.replaceTet(star[k], q);
+            separatedTets.insert(star[k]);
+            if (star[k] < changes.firstNewTet)
+                changes.modifiedTets.push_back(star[k]);
+        }
+    }
+    result.separatedTets = static_cast<int>(separatedTets.size());
+    return result;
+}
+
+} // namespace resect

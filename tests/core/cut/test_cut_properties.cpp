@@ -1,0 +1,176 @@
+// Property tests of the cut on many seeded random sweeps (planar, curved, multi-pose,
+// complete and partial), every method, at scales 1e-3, 1 and 1e3: volume conserved, no
+// inverted or flat tet, conforming topology, no edge crossing the sweep away from the cut
+// surface, complete cuts leave two or more pieces, partial cuts leave one.
+#include "cut_checks.h"
+
+#include "core/mesh/box_mesh.h"
+#include "core/mesh/quality.h"
+
+#include <QTest>
+
+#include <random>
+
+using namespace resect;
+using resect::testing::cutViolations;
+
+namespace {
+
+enum class SweepKind { PlanarComplete, PlanarPartial, CurvedComplete, MultiPoseComplete, CurvedPartial };
+
+TetMesh jitteredBox(double scale, unsigned seed) {
+    TetMesh m = makeBoxTetMesh(Vec3::Zero(), Vec3(1, 1, 1) * scale, 6, 6, 6);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-0.2 / 6 * scale, 0.2 / 6 * scale);
+    for (int n = 0; n < m.nodeCount(); ++n) {
+        const Vec3 p = m.ref(n);
+        const double eps = 1e-9 * scale;
+        if ((p.array() > eps).all() && (p.array() < scale - eps).all()) {
+            m.referencePositions()[n] += Vec3(u(rng), u(rng), u(rng));
+            m.positions()[n] = m.ref(n);
+        }
+    }
+    return m;
+}
+
+/// A random sweep through the unit box scaled by `scale`: a height field over the (s, r)
+/// plane of a random frame, so it never intersects itself.
+SweepSurface randomSweep(SweepKind kind, double scale, std::mt19937& rng) {
+    std::uniform_real_distribution<double> u01(0, 1), sym(-1, 1);
+    Vec3 n(sym(rng), sym(rng), sym(rng));
+    n.normalize();
+    const Vec3 u = n.unitOrthogonal();
+    const Vec3 w = n.cross(u);
+    const Vec3 c = Vec3(0.5 + 0.2 * sym(rng), 0.5 + 0.2 * sym(rng), 0.5 + 0.2 * sym(rng)) * scale;
+    const double R = 2.0 * scale;
+    const bool partial = kind == SweepKind::PlanarPartial || kind == SweepKind::CurvedPartial;
+    const int m = kind == SweepKind::MultiPoseComplete ? 6 : (kind == SweepKind::CurvedPartial ? 4 : 2);
+    const int segments = kind == SweepKind::PlanarComplete || kind == SweepKind::PlanarPartial ? 3 : 12;
+    const double bend = (kind == SweepKind::CurvedComplete || kind == SweepKind::CurvedPartial) ? 0.15 : 0.0;
+    const double twist = kind == SweepKind::MultiPoseComplete ? 0.25 : 0.0;
+    const double phase = 6.28 * u01(rng);
+    std::vector<std::vector<Vec3>> curves(m);
+    for (int i = 0; i < m; ++i) {
+        const double r = -R + (partial ? R : 2 * R) * i / (m - 1);  // partial: stops at the centre
+        for (int j = 0; j <= segments; ++j) {
+            const double s = -R + 2 * R * j / segments;
+            const double h = bend * scale * std::sin(3.0 * s / scale + phase) + twist * s * r / scale;
+            curves[i].push_back(c + s * u + r * w + h * n);
+        }
+    }
+    SweepSurface sweep;
+    const Status st = SweepSurface::fromCurves(curves, sweep);
+    if (!st.ok())
+        qFatal("%s", st.message().c_str());
+    return sweep;
+}
+
+} // namespace
+
+Q_DECLARE_METATYPE(SweepKind)
+Q_DECLARE_METATYPE(resect::CutMethod)
+Q_DECLARE_METATYPE(resect::FaceTriangulation)
+
+class TestCutProperties : public QObject {
+    Q_OBJECT
+private slots:
+    void randomSweeps_data() {
+        QTest::addColumn<double>("scale");
+        QTest::addColumn<CutMethod>("method");
+        QTest::addColumn<FaceTriangulation>("triangulation");
+        QTest::addColumn<SweepKind>("kind");
+        const std::pair<const char*, SweepKind> kinds[] = {
+            {"planar", SweepKind::PlanarComplete},      {"planar partial", SweepKind::PlanarPartial},
+            {"curved", SweepKind::CurvedComplete},      {"multi-pose", SweepKind::MultiPoseComplete},
+            {"curved partial", SweepKind::CurvedPartial}};
+        for (double scale : {1e-3, 1.0, 1e3})
+            for (const auto& [kname, kind] : kinds) {
+                QTest::addRow("%s, subdivision, %g", kname, scale)
+                    << scale << CutMethod::Subdivision << FaceTriangulation::Standard << kind;
+                QTest::addRow("%s, hybrid standard, %g", kname, scale)
+                    << scale << CutMethod::Hybrid << FaceTriangulation::Standard << kind;
+                QTest::addRow("%s, hybrid enhanced, %g", kname, scale)
+                    << scale << CutMethod::Hybrid << FaceTriangulation::Enhanced << kind;
+            }
+    }
+    void randomSweeps() {
+        QFETCH(double, scale);
+        QFETCH(CutMethod, method);
+        QFETCH(FaceTriangulation, triangulation);
+        QFETCH(SweepKind, kind);
+        const bool partial = kind == SweepKind::PlanarPartial || kind == SweepKind::CurvedPartial;
+        for (unsigned seed = 1; seed <= 8; ++seed) {
+            TetMesh mesh = jitteredBox(scale, seed);
+            std::mt19937 rng(seed * 7919u + static_cast<unsigned>(kind));
+            const SweepSurface sweep = randomSweep(kind, scale, rng);
+            const double volume = mesh.totalReferenceVolume();
+            HybridCutter cutter(mesh);
+            CutOptions options;
+            options.method = method;
+            options.triangulation = triangulation;
+            CutResult result;
+            const Status st = cutter.cut(sweep, options, result);
+            QVERIFY2(st.ok(), qPrintable(QString("seed %1: %2").arg(seed).arg(st.message().c_str())));
+            const QString v = cutViolations(mesh, sweep, volume, result);
+            QVERIFY2(v.isEmpty(), qPrintable(QString("seed %1: %2").arg(seed).arg(v)));
+            const int pieces = connectedComponents(mesh).count;
+            if (partial)
+                QVERIFY2(pieces == 1, qPrintable(QString("seed %1: %2 pieces").arg(seed).arg(pieces)));
+            else
+                QVERIFY2(pieces >= 2, qPrintable(QString("seed %1: %2 pieces").arg(seed).arg(pieces)));
+            QVERIFY(result.stats.crossedEdges > 0);
+            QVERIFY(summarizeQuality(mesh).minRadiusRatio > 0);
+        }
+    }
+
+    void repeatedIntersectingCuts() {
+        // Ten scoops through the same region, one after another, with every method.
+        for (CutMethod method : {CutMethod::Hybrid, CutMethod::Subdivision}) {
+            TetMesh mesh = jitteredBox(1.0, 99);
+            const double volume = mesh.totalReferenceVolume();
+            HybridCutter cutter(mesh);
+            std::mt19937 rng(12345);
+            for (int k = 0; k < 10; ++k) {
+                const SweepSurface sweep = randomSweep(k % 2 ? SweepKind::CurvedComplete : SweepKind::PlanarComplete, 1.0, rng);
+                CutOptions options;
+                options.method = method;
+                options.triangulation = method == CutMethod::Hybrid ? FaceTriangulation::Enhanced : FaceTriangulation::Standard;
+                CutResult result;
+                const Status st = cutter.cut(sweep, options, result);
+                QVERIFY2(st.ok(), qPrintable(QString("cut %1: %2").arg(k).arg(st.message().c_str())));
+                const QString v = cutViolations(mesh, sweep, volume, result);
+                QVERIFY2(v.isEmpty(), qPrintable(QString("cut %1: %2").arg(k).arg(v)));
+            }
+            QVERIFY(connectedComponents(mesh).count >= 3);
+        }
+    }
+
+    void changeListDescribesTheEdit() {
+        TetMesh mesh = jitteredBox(1.0, 5);
+        const int nodes = mesh.nodeCount(), tets = mesh.tetCount();
+        const std::vector<Tet> before = mesh.tets();
+        HybridCutter cutter(mesh);
+        std::mt19937 rng(77);
+        const SweepSurface sweep = randomSweep(SweepKind::PlanarComplete, 1.0, rng);
+        CutResult r;
+        QVERIFY(cutter.cut(sweep, CutOptions{}, r).ok());
+        const CutChanges& c = r.changes;
+        QCOMPARE(c.firstNewNode, nodes);
+        QCOMPARE(c.firstNewTet, tets);
+        QCOMPARE(int(c.parentOfNewTet.size()), mesh.tetCount() - tets);
+        // Every old tet that changed is listed; no unchanged one is.
+        std::vector<int> changed;
+        for (int t = 0; t < tets; ++t)
+            if (mesh.tet(t) != before[t])
+                changed.push_back(t);
+        QCOMPARE(c.modifiedTets, changed);
+        for (const auto& [orig, copy] : c.duplicatedNodes) {
+            QVERIFY(copy >= nodes);
+            QVERIFY((mesh.ref(orig) - mesh.ref(copy)).norm() == 0);
+        }
+        QVERIFY(r.stats.timeMs.total >= 0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCutProperties)
+#include "test_cut_properties.moc"
