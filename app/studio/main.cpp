@@ -1,0 +1,214 @@
+// resect-studio: the desktop editor.
+//
+//     resect-studio [--sample polyp|myoma] [--open FILE] [--screenshot PNG]
+//
+// Without --open it meshes and shows the sample polyp (or the sample named by --sample).
+// --screenshot loads, shows the window, waits for the 3-D view's first frame, writes the
+// window image atomically and exits 0. Bad input: one line on stderr, exit 2; an internal
+// failure (timeout, image not written): exit 1.
+
+#include "main_window.h"
+
+#include "core/mesher/samples.h"
+#include "widgets/opengl_support.h"
+#include "widgets/vtk_viewport.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QDir>
+#include <QFileInfo>
+#include <QImage>
+#include <QSaveFile>
+#include <QSurfaceFormat>
+#include <QTextStream>
+#include <QTimer>
+
+#include <cstdio>
+#include <optional>
+#include <string>
+
+namespace {
+
+constexpr int kExitBadInput = 2;
+constexpr int kExitInternal = 1;
+
+/// How long --screenshot waits for loading and the first frame before giving up.
+constexpr int kScreenshotTimeoutMs = 180'000;
+/// Delay after the first frame before grabbing, so that the window is fully composed.
+constexpr int kScreenshotSettleMs = 200;
+
+/// The built-in sample names joined by `separator`.
+QString sampleList(const char* separator) {
+    std::string names;
+    for (const std::string& name : resect::sampleNames())
+        names += (names.empty() ? "" : separator) + name;
+    return QString::fromStdString(names);
+}
+
+void printError(const QString& message) {
+    std::fprintf(stderr, "resect-studio: %s\n", message.toLocal8Bit().constData());
+}
+
+/// Writes the window image to `path` through a temporary file (QSaveFile).
+bool saveScreenshot(QWidget& window, const QString& path, QString& error) {
+    const QImage image = window.grab().toImage();
+    if (image.isNull()) {
+        error = QStringLiteral("could not grab the window");
+        return false;
+    }
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) {
+        error = QStringLiteral("%1: %2").arg(path, file.errorString());
+        return false;
+    }
+    if (!image.save(&file, "PNG")) {
+        file.cancelWriting();
+        error = QStringLiteral("%1: could not encode the PNG image").arg(path);
+        return false;
+    }
+    if (!file.commit()) {
+        error = QStringLiteral("%1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+int main(int argc, char* argv[]) {
+    // Before the application exists, so the window's composition context and the
+    // QOpenGLWidget contexts agree on one VTK-suitable format.
+    QSurfaceFormat::setDefaultFormat(resect::vtkSurfaceFormat());
+    QApplication app(argc, argv);
+    QApplication::setApplicationName(QStringLiteral("resect-studio"));
+    QApplication::setApplicationVersion(QStringLiteral("0.1.0"));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("Resect Studio: author and test surgical cutting scenarios."));
+    const QCommandLineOption helpOption = parser.addHelpOption();
+    const QCommandLineOption versionOption = parser.addVersionOption();
+    const QCommandLineOption sampleOption(
+        QStringLiteral("sample"),
+        QStringLiteral("Open a built-in sample (%1); the default is polyp.").arg(sampleList("|")),
+        QStringLiteral("name"));
+    const QCommandLineOption openOption(
+        QStringLiteral("open"),
+        QStringLiteral("Open a tet mesh (.vtu, .msh, .node) or a surface to mesh."),
+        QStringLiteral("file"));
+    const QCommandLineOption screenshotOption(
+        QStringLiteral("screenshot"),
+        QStringLiteral("Write a PNG of the window once the view has rendered, then exit."),
+        QStringLiteral("png"));
+    parser.addOption(sampleOption);
+    parser.addOption(openOption);
+    parser.addOption(screenshotOption);
+
+    if (!parser.parse(QApplication::arguments())) {
+        printError(parser.errorText());
+        return kExitBadInput;
+    }
+    if (parser.isSet(helpOption))
+        parser.showHelp(0);
+    if (parser.isSet(versionOption))
+        parser.showVersion();
+    if (!parser.positionalArguments().isEmpty()) {
+        printError(QStringLiteral("unexpected argument '%1' (use --open FILE)")
+                       .arg(parser.positionalArguments().first()));
+        return kExitBadInput;
+    }
+    if (parser.isSet(sampleOption) && parser.isSet(openOption)) {
+        printError(QStringLiteral("--sample and --open exclude each other"));
+        return kExitBadInput;
+    }
+
+    resect::Sample sample = resect::Sample::Polyp;
+    QString openPath; // empty: open `sample`
+    if (parser.isSet(openOption)) {
+        openPath = parser.value(openOption);
+        const QFileInfo info(openPath);
+        if (!info.exists() || !info.isFile() || !info.isReadable()) {
+            printError(QStringLiteral("--open %1: no such readable file").arg(openPath));
+            return kExitBadInput;
+        }
+    } else if (parser.isSet(sampleOption)) {
+        const QString name = parser.value(sampleOption);
+        const std::optional<resect::Sample> named = resect::sampleFromName(name.toStdString());
+        if (!named) {
+            printError(QStringLiteral("--sample %1: unknown sample (choose %2)")
+                           .arg(name, sampleList(", ")));
+            return kExitBadInput;
+        }
+        sample = *named;
+    }
+
+    QString screenshotPath;
+    if (parser.isSet(screenshotOption)) {
+        screenshotPath = parser.value(screenshotOption);
+        const QFileInfo info(screenshotPath);
+        if (screenshotPath.isEmpty() || info.isDir() || !info.absoluteDir().exists()) {
+            printError(QStringLiteral("--screenshot %1: not a file in an existing directory")
+                           .arg(screenshotPath));
+            return kExitBadInput;
+        }
+    }
+    const bool screenshot = !screenshotPath.isEmpty();
+
+    resect::MainWindow window;
+    window.resize(1100, 800);
+    window.setErrorDialogsEnabled(!screenshot);
+
+    if (screenshot) {
+        QObject::connect(&window, &resect::MainWindow::loadFailed, &app,
+                         [](const QString& message) {
+                             printError(message);
+                             QApplication::exit(kExitBadInput);
+                         });
+        auto grabAndQuit = [&window, screenshotPath] {
+            QString error;
+            if (!saveScreenshot(window, screenshotPath, error)) {
+                printError(error);
+                QApplication::exit(kExitInternal);
+                return;
+            }
+            QApplication::exit(0);
+        };
+        QObject::connect(&window, &resect::MainWindow::meshLoaded, &app, [&window, grabAndQuit] {
+            resect::VtkViewport* viewport = window.viewport();
+            if (!viewport->hasRendering()) {
+                // Placeholder only: nothing to wait for beyond a normal repaint.
+                QTimer::singleShot(kScreenshotSettleMs, &window, grabAndQuit);
+                return;
+            }
+            // Wait for the first frame that shows the mesh, then let it settle.
+            QObject::connect(
+                viewport, &resect::VtkViewport::frameRendered, &window,
+                [&window, grabAndQuit] {
+                    QTimer::singleShot(kScreenshotSettleMs, &window, grabAndQuit);
+                },
+                Qt::SingleShotConnection);
+            // If OpenGL turns out to be unusable, the placeholder is what there is to show.
+            QObject::connect(
+                viewport, &resect::VtkViewport::renderingUnavailable, &window,
+                [&window, grabAndQuit] {
+                    QTimer::singleShot(kScreenshotSettleMs, &window, grabAndQuit);
+                },
+                Qt::SingleShotConnection);
+            viewport->requestRender();
+        });
+        QTimer::singleShot(kScreenshotTimeoutMs, &app, [] {
+            printError(QStringLiteral("timed out waiting for the mesh and the first frame"));
+            QApplication::exit(kExitInternal);
+        });
+    } else {
+        QObject::connect(&window, &resect::MainWindow::loadFailed, &app,
+                         [](const QString& message) { printError(message); });
+    }
+
+    window.show();
+    if (openPath.isEmpty())
+        window.openSample(sample);
+    else
+        window.openFile(openPath);
+    return QApplication::exec();
+}

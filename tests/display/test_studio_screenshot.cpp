@@ -1,0 +1,195 @@
+// Runs the real resect-studio binary: under Xvfb it must render the samples (screenshot not
+// blank), under the `offscreen` platform it must fall back to the placeholder and still
+// write a screenshot, and bad input must give exit code 2 with a message on stderr.
+
+#include "image_stats.h"
+#include "widgets/vtk_viewport.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
+#include <QProcess>
+#include <QProcessEnvironment>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+
+using namespace resect;
+
+namespace {
+
+constexpr int kProcessTimeoutMs = 300'000;
+
+/// The viewport's background as 8-bit RGB, as OpenGL writes it.
+QRgb viewportBackground() {
+    const auto& bg = VtkViewport::kBackground;
+    return qRgb(int(std::lround(bg[0] * 255)), int(std::lround(bg[1] * 255)),
+                int(std::lround(bg[2] * 255)));
+}
+
+struct RunResult {
+    bool finished = false;
+    int exitCode = -1;
+    QString stdErr;
+};
+
+RunResult run(const QString& program, const QStringList& arguments,
+              const QProcessEnvironment& environment) {
+    QProcess process;
+    process.setProcessEnvironment(environment);
+    process.start(program, arguments);
+    RunResult result;
+    if (!process.waitForStarted(30'000)) {
+        result.stdErr =
+            QStringLiteral("could not start %1: %2").arg(program, process.errorString());
+        return result;
+    }
+    result.finished = process.waitForFinished(kProcessTimeoutMs);
+    if (!result.finished)
+        process.kill();
+    result.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+    result.stdErr = QString::fromLocal8Bit(process.readAllStandardError());
+    return result;
+}
+
+QString describe(const RunResult& r) {
+    return QStringLiteral("finished %1, exit code %2, stderr:\n%3")
+        .arg(r.finished)
+        .arg(r.exitCode)
+        .arg(r.stdErr);
+}
+
+QProcessEnvironment environmentWithPlatform(const QString& platform) {
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    if (platform.isEmpty())
+        env.remove(QStringLiteral("QT_QPA_PLATFORM"));
+    else
+        env.insert(QStringLiteral("QT_QPA_PLATFORM"), platform);
+    return env;
+}
+
+} // namespace
+
+class TestStudioScreenshot : public QObject {
+    Q_OBJECT
+
+private slots:
+    void rendersSampleUnderXvfb_data();
+    void rendersSampleUnderXvfb();
+    void offscreenFallsBackToPlaceholder();
+    void badInputExitsTwo_data();
+    void badInputExitsTwo();
+};
+
+void TestStudioScreenshot::rendersSampleUnderXvfb_data() {
+    QTest::addColumn<QString>("sample");
+    QTest::newRow("polyp") << QStringLiteral("polyp");
+    QTest::newRow("myoma") << QStringLiteral("myoma");
+}
+
+void TestStudioScreenshot::rendersSampleUnderXvfb() {
+    QFETCH(QString, sample);
+    // A missing xvfb-run is a broken test environment, not a reason to skip.
+    const QString xvfbRun = QStandardPaths::findExecutable(QStringLiteral("xvfb-run"));
+    QVERIFY2(!xvfbRun.isEmpty(), "xvfb-run not found on PATH (Debian package xvfb)");
+
+    // Kept in the build tree so that a failing run leaves the image to look at.
+    const QString dir = QStringLiteral(RESECT_BINARY_DIR "/tests/display");
+    QVERIFY(QDir().mkpath(dir));
+    const QString png = dir + QStringLiteral("/studio_%1.png").arg(sample);
+    QFile::remove(png);
+
+    const RunResult r =
+        run(xvfbRun,
+            {QStringLiteral("-a"), QStringLiteral("-s"), QStringLiteral("-screen 0 1280x1024x24"),
+             QStringLiteral(RESECT_STUDIO_EXE), QStringLiteral("--sample"), sample,
+             QStringLiteral("--screenshot"), png},
+            environmentWithPlatform(QStringLiteral("xcb")));
+    QVERIFY2(r.finished && r.exitCode == 0, qPrintable(describe(r)));
+
+    QImage image;
+    QVERIFY2(image.load(png), qPrintable(png));
+    QVERIFY(image.width() > 0 && image.height() > 0);
+
+    // The middle of the window is the 3-D view: it must show the view's background around
+    // a lit, quality-coloured mesh.
+    const ImageStats stats =
+        analyseRegion(image, centralRegion(image, 0.8), viewportBackground(), 6);
+    const QString summary =
+        QStringLiteral("%1: %2 distinct colours, %3 of pixels differ from the background, "
+                       "most frequent colour #%4 (%5 of pixels)")
+            .arg(png)
+            .arg(stats.distinctColours)
+            .arg(stats.differingFraction)
+            .arg(stats.background & 0xffffffu, 6, 16, QLatin1Char('0'))
+            .arg(stats.backgroundShare);
+    qInfo().noquote() << summary;
+    // What surrounds the mesh is the 3-D view's own background: VTK rendered into the
+    // window (not the placeholder, not Qt's fill showing through a transparent frame).
+    QVERIFY2(colourDistance(stats.background, viewportBackground()) <= 6, qPrintable(summary));
+    QVERIFY2(stats.distinctColours >= 50, qPrintable(summary));
+    QVERIFY2(stats.differingFraction >= 0.10, qPrintable(summary));
+    // Some background shows: the mesh is framed, not filling (or missing from) the view.
+    QVERIFY2(stats.differingFraction <= 0.95, qPrintable(summary));
+}
+
+void TestStudioScreenshot::offscreenFallsBackToPlaceholder() {
+    QTemporaryDir tmp;
+    QVERIFY(tmp.isValid());
+    const QString png = tmp.filePath(QStringLiteral("offscreen.png"));
+    const RunResult r = run(
+        QStringLiteral(RESECT_STUDIO_EXE),
+        {QStringLiteral("--sample"), QStringLiteral("polyp"), QStringLiteral("--screenshot"), png},
+        environmentWithPlatform(QStringLiteral("offscreen")));
+    QVERIFY2(r.finished && r.exitCode == 0, qPrintable(describe(r)));
+    QImage image;
+    QVERIFY(image.load(png));
+    QVERIFY(image.width() > 0 && image.height() > 0);
+    // No temporary left next to the result (QSaveFile renames atomically).
+    QCOMPARE(QDir(tmp.path()).entryList(QDir::Files), QStringList{QStringLiteral("offscreen.png")});
+}
+
+void TestStudioScreenshot::badInputExitsTwo_data() {
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("mentions");
+    QTest::newRow("unknown sample") << QStringList{"--sample", "spleen"} << "spleen";
+    QTest::newRow("unknown option") << QStringList{"--colour", "red"} << "colour";
+    QTest::newRow("missing value") << QStringList{"--open"} << "open";
+    QTest::newRow("positional") << QStringList{"mesh.vtu"} << "mesh.vtu";
+    QTest::newRow("missing file") << QStringList{"--open", "/nonexistent/none.vtu"}
+                                  << "/nonexistent/none.vtu";
+    QTest::newRow("sample and open")
+        << QStringList{"--sample", "polyp", "--open", "x.vtu"} << "--open";
+    QTest::newRow("screenshot directory missing")
+        << QStringList{"--screenshot", "/nonexistent/dir/shot.png"} << "/nonexistent/dir";
+    // Fails while loading, after the window is up; @TMP@ is replaced by a temporary folder.
+    QTest::newRow("corrupt mesh") << QStringList{"--open", "@TMP@/corrupt.vtu", "--screenshot",
+                                                 "@TMP@/never.png"}
+                                  << "corrupt.vtu";
+}
+
+void TestStudioScreenshot::badInputExitsTwo() {
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, mentions);
+    QTemporaryDir tmp;
+    QVERIFY(tmp.isValid());
+    {
+        QFile corrupt(tmp.filePath(QStringLiteral("corrupt.vtu")));
+        QVERIFY(corrupt.open(QIODevice::WriteOnly));
+        corrupt.write("<VTKFile type=\"UnstructuredGrid\"> this is not a mesh");
+    }
+    for (QString& a : arguments)
+        a.replace(QStringLiteral("@TMP@"), tmp.path());
+
+    const RunResult r = run(QStringLiteral(RESECT_STUDIO_EXE), arguments,
+                            environmentWithPlatform(QStringLiteral("offscreen")));
+    QVERIFY2(r.finished && r.exitCode == 2, qPrintable(describe(r)));
+    QVERIFY2(r.stdErr.contains(mentions), qPrintable(describe(r)));
+    QVERIFY(!QFileInfo::exists(tmp.filePath(QStringLiteral("never.png"))));
+}
+
+QTEST_GUILESS_MAIN(TestStudioScreenshot)
+#include "test_studio_screenshot.moc"

@@ -1,0 +1,106 @@
+#pragma once
+// VtkViewport: a 3-D view of the loaded meshes.
+//
+// With OpenGL it hosts a VtkGlWidget rendering the scene with VTK; without (the `offscreen`
+// platform, a failed context, RESECT_NO_OPENGL) it shows a placeholder label instead and
+// everything else keeps working: the scene's VTK data, the bounds and the camera model
+// (OrbitCamera), which the mouse drives in both cases.
+//
+// Mouse: left drag orbits, middle drag or Shift+left pans, right drag or Ctrl+left zooms,
+// the wheel zooms.
+
+#include "core/mesh/tet_mesh.h"
+#include "core/mesh/triangle_surface.h"
+#include "widgets/orbit_camera.h"
+#include "widgets/surface_actor.h"
+#include "widgets/tet_mesh_actor.h"
+
+#include <QImage>
+#include <QPoint>
+#include <QString>
+#include <QWidget>
+
+#include <array>
+
+class QLabel;
+class QVBoxLayout;
+class vtkCamera;
+
+namespace resect {
+
+class VtkGlWidget;
+
+class VtkViewport : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit VtkViewport(QWidget* parent = nullptr);
+    ~VtkViewport() override;
+
+    /// Shows the mesh's boundary coloured by the radius ratio of the owning tet, with the
+    /// element edges, and frames it (resetCamera()). An empty mesh clears the view.
+    void setTetMesh(const TetMesh& mesh);
+    /// Shows a triangle surface in tissue colour; frames the scene if nothing else is shown.
+    void setSurface(const TriangleSurface& surface);
+    /// Removes everything from the view.
+    void clear();
+
+    /// Frames the bounds of everything shown, keeping the view direction.
+    void resetCamera();
+    /// The camera used for rendering and for the camera maths (picking, strokes).
+    vtkCamera* camera() const { return m_camera.camera(); }
+    /// Bounds of everything shown; invalid (min > max) when the scene is empty.
+    Bounds sceneBounds() const;
+
+    /// True while the view renders with OpenGL; false when the placeholder is shown.
+    bool hasRendering() const;
+    /// Why there is no rendering (empty while hasRendering()).
+    QString renderingUnavailableReason() const { return m_unavailableReason; }
+    /// The view as an image: the rendered frame, or a grab of the placeholder.
+    QImage grabImage();
+    /// Schedules a frame (no-op without rendering).
+    void requestRender();
+
+    /// Background colour of the 3-D view (RGB in [0, 1]).
+    static constexpr std::array<double, 3> kBackground{0.11, 0.13, 0.17};
+
+signals:
+    /// A frame has been rendered (only with rendering).
+    void frameRendered();
+    /// The camera moved (mouse interaction or reset).
+    void cameraChanged();
+    /// Rendering was lost and the placeholder is now shown.
+    void renderingUnavailable(const QString& reason);
+
+protected:
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+
+private:
+    enum class Drag { None, Orbit, Pan, Zoom };
+
+    void createGlWidget();
+    void showPlaceholder(const QString& reason);
+    void updatePlaceholderText();
+    void onGlInitializationFailed(const QString& reason);
+    void cameraMoved();
+
+    OrbitCamera m_camera;
+    TetMeshActor m_tetMesh;
+    SurfaceActor m_surface;
+    int m_nodeCount = 0;
+    int m_tetCount = 0;
+    int m_triangleCount = 0;
+
+    QVBoxLayout* m_layout = nullptr;
+    VtkGlWidget* m_glWidget = nullptr;
+    QLabel* m_placeholder = nullptr;
+    QString m_unavailableReason;
+
+    Drag m_drag = Drag::None;
+    QPoint m_lastPos;
+};
+
+} // namespace resect
