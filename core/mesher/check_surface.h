@@ -30,7 +30,11 @@ struct SurfaceCheckOptions {
 SurfaceCheck checkSurface(const TriangleSurface& surface, const SurfaceCheckOptions& options = {});
 
 /// Success if the surface is fit for meshing; else one plain sentence naming the first
-/// problem with counts, e.g. "open surface: 12 border edges (try --repair)".
+/// problem with counts, e.g. "open surface: 12 border edges (try --repair to fill holes)".
+/// Problems are reported in this order: no triangles, non-finite vertices, bad indices,
+/// non-manifold edges, non-manifold vertices, inconsistent orientation, border edges,
+/// zero-area triangles, self-intersection, zero enclosed volume. An inside-out surface
+/// (negative enclosed volume) is fit for meshing; orientOutward() turns it around.
 Status surfaceProblem(const SurfaceCheck& check);
 
 /// Closes holes (border loops) with CGAL's hole filling (triangulate, refine, fair).

@@ -78,17 +78,16 @@ TriangleSurface makeBox(const Vec3& lo, const Vec3& hi) {
                                  (k & 4) ? hi.z() : lo.z());
         // A simple planar projection (x, z) onto the unit square, slanted by y so that
         // no two corners share coordinates; boxes carry no meaningful texture.
-        s.uvs.emplace_back(((k & 1) ? 0.75 : 0.0) + ((k & 2) ? 0.25 : 0.0),
-                           (k & 4) ? 1.0 : 0.0);
+        s.uvs.emplace_back(((k & 1) ? 0.75 : 0.0) + ((k & 2) ? 0.25 : 0.0), (k & 4) ? 1.0 : 0.0);
     }
     // Faces as counter-clockwise quads seen from outside.
-    addQuad(s.triangles, 0, 2, 3, 1);  // z = lo
-    addQuad(s.triangles, 4, 5, 7, 6);  // z = hi
-    addQuad(s.triangles, 0, 1, 5, 4);  // y = lo
-    addQuad(s.triangles, 2, 6, 7, 3);  // y = hi
-    addQuad(s.triangles, 0, 4, 6, 2);  // x = lo
-    addQuad(s.triangles, 1, 3, 7, 5);  // x = hi
-    orientByVolume(s);  // a box given with lo > hi on an odd number of axes
+    addQuad(s.triangles, 0, 2, 3, 1); // z = lo
+    addQuad(s.triangles, 4, 5, 7, 6); // z = hi
+    addQuad(s.triangles, 0, 1, 5, 4); // y = lo
+    addQuad(s.triangles, 2, 6, 7, 3); // y = hi
+    addQuad(s.triangles, 0, 4, 6, 2); // x = lo
+    addQuad(s.triangles, 1, 3, 7, 5); // x = hi
+    orientByVolume(s);                // a box given with lo > hi on an odd number of axes
     return s;
 }
 
@@ -97,7 +96,7 @@ TriangleSurface makePolarGridSurface(const std::function<Vec3(double s, double p
     rings = std::max(rings, 2);
     segments = std::max(segments, 3);
     TriangleSurface surf;
-    const int ringVertices = rings - 1;  // rings of `segments` vertices between the poles
+    const int ringVertices = rings - 1; // rings of `segments` vertices between the poles
     surf.positions.reserve(static_cast<std::size_t>(ringVertices) * segments + 2);
     surf.uvs.reserve(surf.positions.capacity());
 

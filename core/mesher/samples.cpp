@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 namespace resect {
 
@@ -45,29 +47,34 @@ Resolution resolution(double detail, int rings1, int segments1) {
 constexpr double kPolypHeight = 20.0;
 
 /// Axisymmetric radius of the polyp at height z in [0, kPolypHeight]; zero exactly at the
-/// two ends. The head (an ellipse of revolution) and the stalk with its flared base are
-/// blended by a p-norm, (a^p + b^p)^(1/p), which is smooth and keeps the apex closed.
+/// two ends.
+///  - Base (z <= 1.5): a quarter superellipse |r / 4.6|^4 + |(z - 1.5) / 1.5|^4 = 1, a
+///    flat bottom with a rounded rim, reaching r = 4.6 with a vertical tangent.
+///  - Flare and stalk (z >= 1.5): the stalk radius 2.0 (with a slight waist) plus a
+///    Gaussian flare that starts at 4.6 with zero slope and decays over about 2 mm.
+///  - Head: two half ellipses of revolution joined at z = 14 (radius 5.2), half-height
+///    6 above (apex at z = 20) and 5 below. Stalk and head are blended by a p-norm,
+///    (a^p + b^p)^(1/p), smooth for p = 4 (head^4 is smooth where the head starts) and
+///    keeping the apex closed.
 double polypProfile(double z) {
     z = std::clamp(z, 0.0, kPolypHeight);
-    // Head: ellipse centred at z = 13.6, half-height 6.4 (top at z = 20), radius 5.6.
-    const double headCentre = 13.6, headHalfHeight = 6.4, headRadius = 5.6;
-    const double h = (z - headCentre) / headHalfHeight;
-    const double head = headRadius * std::sqrt(std::max(0.0, 1.0 - h * h));
-    // Stalk: radius 2.3 with a slight waist, flaring to 4.6 at the base (Gaussian
-    // flare of width 1.6), fading out inside the head so it never reaches the apex.
-    const double waist = 1.0 - 0.08 * std::exp(-std::pow((z - 5.5) / 2.0, 2));
-    const double flare = 2.3 * std::exp(-std::pow(z / 1.6, 2));
-    const double stalk = (2.3 * waist + flare) * (1.0 - smoothstep(12.0, 16.0, z));
-    constexpr double p = 4.0;
-    double r = std::pow(std::pow(head, p) + std::pow(stalk, p), 1.0 / p);
-    // Rounded bottom rim: a quarter ellipse of height 0.9 closes the base at z = 0
-    // (value and slope continuous at z = 0.9).
-    const double rim = 0.9;
-    if (z < rim) {
-        const double t = 1.0 - z / rim;
-        r *= std::sqrt(std::max(0.0, 1.0 - t * t));
+    constexpr double baseRadius = 4.6, baseHeight = 1.5;
+    if (z <= baseHeight) {
+        const double t = (baseHeight - z) / baseHeight;
+        return baseRadius * std::pow(std::max(0.0, 1.0 - std::pow(t, 4)), 0.25);
     }
-    return r;
+    constexpr double headCentre = 14.0, headRadius = 5.2;
+    constexpr double headUpper = 6.0, headLower = 5.0; // half-heights above and below
+    const double h = (z - headCentre) / (z > headCentre ? headUpper : headLower);
+    const double head = headRadius * std::sqrt(std::max(0.0, 1.0 - h * h));
+    constexpr double stalkRadius = 2.0;
+    const double waist = 1.0 - 0.08 * std::exp(-std::pow((z - 6.0) / 2.0, 2));
+    const double flare =
+        (baseRadius - stalkRadius * waist) * std::exp(-std::pow((z - baseHeight) / 1.8, 2));
+    // The stalk fades out inside the head so that it never reaches the apex.
+    const double stalk = (stalkRadius * waist + flare) * (1.0 - smoothstep(12.0, 16.0, z));
+    constexpr double p = 4.0;
+    return std::pow(std::pow(head, p) + std::pow(stalk, p), 1.0 / p);
 }
 
 /// Sideways offset of the slice centre: the stalk leans gently, the head sits off-axis.
@@ -77,21 +84,21 @@ Vec3 polypCentre(double z) {
 }
 
 /// Radial factor of the head's soft lobes: four Gaussian bumps of different size, angle
-/// and height (irregular, like a real polyp head), with shallow clefts between them.
-/// Always in [0.9, 1.3], so the radius stays positive and each slice star-shaped.
+/// and height (irregular, like a real polyp head) on a head that is pulled in by 18 %
+/// between them (the clefts). Always in [0.82, 1.2], so the radius stays positive and
+/// each slice star-shaped.
 double polypLobes(double z, double phi) {
     struct Lobe {
         double amplitude, angle, height;
     };
-    static constexpr std::array<Lobe, 4> lobes{{{0.20, 0.3, 15.0},
-                                                {0.15, 1.9, 13.2},
-                                                {0.22, 3.4, 14.6},
-                                                {0.13, 4.9, 12.8}}};
-    const double angularWidth = 0.65;  // rad
-    const double verticalWidth = 3.0;  // mm
-    double f = 1.0 - 0.06 * smoothstep(9.0, 13.0, z);  // clefts: the head shrinks a little
+    static constexpr std::array<Lobe, 4> lobes{
+        {{0.36, 0.3, 15.8}, {0.28, 1.85, 14.2}, {0.34, 3.5, 15.2}, {0.25, 5.0, 13.8}}};
+    const double angularWidth = 0.5;  // rad
+    const double verticalWidth = 3.0; // mm
+    const double cleft = 0.18 * smoothstep(9.5, 12.5, z);
+    double f = 1.0 - cleft;
     for (const Lobe& l : lobes) {
-        double d = std::remainder(phi - l.angle, 2.0 * kPi);  // periodic angle difference
+        const double d = std::remainder(phi - l.angle, 2.0 * kPi); // periodic difference
         f += l.amplitude * std::exp(-std::pow(d / angularWidth, 2)) *
              std::exp(-std::pow((z - l.height) / verticalWidth, 2));
     }
@@ -104,38 +111,39 @@ class PolypMeridian {
 public:
     PolypMeridian() {
         // Dense sampling with z = H (1 - cos(pi t)) / 2, which crowds samples at the two
-        // poles where the radius changes fastest.
+        // poles where the radius changes fastest; r and z are interpolated linearly
+        // between samples, so the meridian is a fine polyline with z strictly increasing.
         constexpr int n = 20000;
+        m_r.resize(n + 1);
         m_z.resize(n + 1);
         m_length.resize(n + 1);
-        double prevR = 0.0, prevZ = 0.0, length = 0.0;
+        double length = 0.0;
         for (int i = 0; i <= n; ++i) {
             const double t = static_cast<double>(i) / n;
-            const double z = 0.5 * kPolypHeight * (1.0 - std::cos(kPi * t));
-            const double r = polypProfile(z);
+            m_z[i] = 0.5 * kPolypHeight * (1.0 - std::cos(kPi * t));
+            m_r[i] = (i == 0 || i == n) ? 0.0 : polypProfile(m_z[i]);
             if (i > 0)
-                length += std::hypot(r - prevR, z - prevZ);
-            m_z[i] = z;
+                length += std::hypot(m_r[i] - m_r[i - 1], m_z[i] - m_z[i - 1]);
             m_length[i] = length;
-            prevR = r;
-            prevZ = z;
         }
     }
-    /// Height at arc-length fraction s in [0, 1]; strictly increasing in s.
-    double heightAt(double s) const {
+    /// (radius, height) at arc-length fraction s in [0, 1]; the height increases strictly
+    /// with s and the radius is positive for 0 < s < 1.
+    std::pair<double, double> at(double s) const {
         const double target = std::clamp(s, 0.0, 1.0) * m_length.back();
         const auto it = std::lower_bound(m_length.begin(), m_length.end(), target);
         if (it == m_length.begin())
-            return m_z.front();
+            return {m_r.front(), m_z.front()};
         if (it == m_length.end())
-            return m_z.back();
+            return {m_r.back(), m_z.back()};
         const std::size_t i = static_cast<std::size_t>(it - m_length.begin());
         const double l0 = m_length[i - 1], l1 = m_length[i];
         const double w = l1 > l0 ? (target - l0) / (l1 - l0) : 0.0;
-        return m_z[i - 1] + w * (m_z[i] - m_z[i - 1]);
+        return {m_r[i - 1] + w * (m_r[i] - m_r[i - 1]), m_z[i - 1] + w * (m_z[i] - m_z[i - 1])};
     }
 
 private:
+    std::vector<double> m_r;
     std::vector<double> m_z;
     std::vector<double> m_length;
 };
@@ -146,8 +154,8 @@ TriangleSurface makePolyp(double detail) {
     const Resolution res = resolution(detail, 126, 160);
     return makePolarGridSurface(
         [&meridian](double s, double phi) {
-            const double z = s <= 0.0 ? 0.0 : s >= 1.0 ? kPolypHeight : meridian.heightAt(s);
-            const double r = polypProfile(z) * polypLobes(z, phi);
+            const auto [radius, z] = meridian.at(s);
+            const double r = radius * polypLobes(z, phi);
             const Vec3 c = polypCentre(z);
             return Vec3(c.x() + r * std::cos(phi), c.y() + r * std::sin(phi), z);
         },
@@ -175,11 +183,11 @@ double myomaPerturbation(const Vec3& d) {
 TriangleSurface makeMyoma(double detail) {
     // 126 x 160 gives 40 000 triangles at detail 1.
     const Resolution res = resolution(detail, 126, 160);
-    const double radius = 10.0;                  // mm
-    const Vec3 scale(1.04, 0.97, 0.93);          // slightly oblate, irregular
+    const double radius = 10.0;         // mm
+    const Vec3 scale(1.04, 0.97, 0.93); // slightly oblate, irregular
     return makePolarGridSurface(
         [radius, scale](double s, double phi) {
-            const double theta = kPi * s;  // from the bottom pole (-z)
+            const double theta = kPi * s; // from the bottom pole (-z)
             const Vec3 d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
                          -std::cos(theta));
             const double r = radius * (1.0 + myomaPerturbation(d));
@@ -208,7 +216,9 @@ std::string sampleName(Sample sample) {
     return "unknown";
 }
 
-std::vector<std::string> sampleNames() { return {"polyp", "myoma"}; }
+std::vector<std::string> sampleNames() {
+    return {"polyp", "myoma"};
+}
 
 TriangleSurface sampleSurface(Sample sample, double detail) {
     switch (sample) {
