@@ -56,5 +56,7 @@ void requireDistinct(const std::string& input, const std::string& out);
 int runInfo(Args args);
 int runMesh(Args args);
 int runDemo(Args args);
+int runCut(Args args);
+int runTable1(Args args);
 
 } // namespace resect::cli

@@ -19,6 +19,11 @@ commands:
                                     reads) or a built-in sample (polyp, myoma)
   demo [--out DIR] [--sample NAME]  headless demo: mesh a sample, print its quality,
                                     write the mesh, surface and summary to DIR
+  cut MESH --sweep S.json [--sweep S2.json ...] --out OUT.vtu [--report R.json]
+      [--method hybrid|subdivision] [--triangulation enhanced|standard] [--d 0.2]
+                                    cut along one or more sweep surfaces, one after another
+  table1 [--sample polyp|myoma ...] [--d 0.2] [--out TABLE.md]
+                                    the paper's Table 1 on the built-in samples
 
 exit codes: 0 success, 2 bad input, 1 internal failure
 )";
@@ -42,6 +47,10 @@ int main(int argc, char** argv) {
             return runMesh(Args(args));
         if (command == "demo")
             return runDemo(Args(args));
+        if (command == "cut")
+            return runCut(Args(args));
+        if (command == "table1")
+            return runTable1(Args(args));
         throw CliError{kBadInput, "unknown command '" + command + "' (try resect --help)"};
     } catch (const CliError& e) {
         std::fprintf(stderr, "resect %s: %s\n", command.c_str(), e.message.c_str());

@@ -86,9 +86,16 @@ private:
     Decomposition& m_out;
     CutChanges& m_changes;
     std::unordered_map<Tri, int, FaceHash> m_faceNodes;
+    std::unordered_map<Tri, int, FaceHash> m_faceDiagonal;  ///< face -> a node on its chosen diagonal
     std::unordered_map<int, std::uint8_t> m_planes;  ///< planes each vertex of the current tet lies on
     std::vector<int> m_scratch;
 };
+
+/// Shape quality of a triangle: 4 sqrt(3) area / (sum of squared edges), 1 if equilateral.
+double triangleQuality(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const double l2 = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
+    return l2 > 0 ? 2.0 * std::sqrt(3.0) * (b - a).cross(c - a).norm() / l2 : 0.0;
+}
 
 int Decomposer::faceNode(const Tri& corners, const std::array<int, 4>& quad) {
     Tri key = corners;
@@ -102,6 +109,26 @@ int Decomposer::faceNode(const Tri& corners, const std::array<int, 4>& quad) {
         ref += m_mesh.ref(v) / 4.0;
         pos += m_mesh.pos(v) / 4.0;
         vel += m_mesh.velocities()[v] / 4.0;
+    }
+    // The face node is used where its four triangles are clearly better shaped than the two
+    // of the better diagonal (both tets sharing the face compute the same, from the face
+    // alone); otherwise the better diagonal is used.
+    {
+        const auto R = [&](int v) -> const Vec3& { return m_mesh.ref(v); };
+        double fan = 1, diag02 = 1, diag13 = 1;
+        for (int k = 0; k < 4; ++k)
+            fan = std::min(fan, triangleQuality(R(quad[k]), R(quad[(k + 1) % 4]), ref));
+        diag02 = std::min(triangleQuality(R(quad[0]), R(quad[1]), R(quad[2])),
+                          triangleQuality(R(quad[0]), R(quad[2]), R(quad[3])));
+        diag13 = std::min(triangleQuality(R(quad[1]), R(quad[2]), R(quad[3])),
+                          triangleQuality(R(quad[1]), R(quad[3]), R(quad[0])));
+        if (fan < m_options.faceNodeAdvantage * std::max(diag02, diag13)) {
+            // Remember the diagonal by a node on it: the neighbour walks the face the other
+            // way round, so a position in the quad would not mean the same diagonal.
+            m_faceDiagonal.emplace(key, diag02 >= diag13 ? quad[0] : quad[1]);
+            m_faceNodes.emplace(key, -2);
+            return -2;
+        }
     }
     // A curved sweep may bulge past the chord between the split points into the prism; a
     // face node whose spokes would cross it is not used (the face gets the diagonal).
@@ -184,16 +211,24 @@ Status Decomposer::triangulateFace(const TetCut& tc, const std::array<int, 6>& e
         const std::array<int, 4> quad{at(c + 1), at(c + 2), at(c + 3), at(c + 4)};
         const int quadSide = tc.partial ? 0 : sideOfVertex(tc, quad[1]);
         emit(corner, tc.partial ? 0 : sideOfVertex(tc, corner[1]));
+        // fn >= 0: face node; -2: the diagonal chosen for shape (enhanced mode); -1: the
+        // standard rule.
         const int fn = m_options.symmetricFaces ? faceNode({q[lf[0]], q[lf[1]], q[lf[2]]}, quad) : -1;
         if (fn >= 0) {
             m_planes[fn] = static_cast<std::uint8_t>(1 << f);
             for (int k = 0; k < 4; ++k)
                 emit({quad[k], quad[(k + 1) % 4], fn}, quadSide);
         } else {
-            // Diagonal through the quad's smallest global index: both tets sharing the face
-            // see the same indices, so they choose the same diagonal.
+            // Standard: the diagonal through the quad's smallest global index; both tets
+            // sharing the face see the same indices, so they choose the same diagonal.
             const int smallest = static_cast<int>(std::min_element(quad.begin(), quad.end()) - quad.begin());
-            const int d = smallest % 2;
+            int d = smallest % 2;
+            if (fn == -2) {
+                Tri key{q[lf[0]], q[lf[1]], q[lf[2]]};
+                std::sort(key.begin(), key.end());
+                const int onDiagonal = m_faceDiagonal.at(key);
+                d = static_cast<int>(std::find(quad.begin(), quad.end(), onDiagonal) - quad.begin()) % 2;
+            }
             emit({quad[d], quad[d + 1], quad[(d + 2) % 4]}, quadSide);
             emit({quad[d], quad[(d + 2) % 4], quad[(d + 3) % 4]}, quadSide);
         }
@@ -308,7 +343,7 @@ Status Decomposer::cone(const std::vector<SideTri>& tris, std::vector<Tet>& tets
     int best = -1, bestCount = std::numeric_limits<int>::max();
     double bestQuality = -1;
     for (const auto& [count, v] : candidates) {
-        if (count > bestCount)
+        if (m_options.apexByQuality ? false : count > bestCount)
             break;
         bool valid = true;
         double quality = std::numeric_limits<double>::infinity();

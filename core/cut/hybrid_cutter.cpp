@@ -32,6 +32,8 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
     if (!std::isfinite(options.d) || options.d < 0 || options.d > 0.5)
         return Status::error("d must be in [0, 0.5] (a fraction of the mean edge length), got " +
                              std::to_string(options.d));
+    if (!(options.faceNodeAdvantage >= 0) || options.faceNodeAdvantage > 100)
+        return Status::error("faceNodeAdvantage must be in [0, 100]");
     if (!(options.minEdgeFraction > 0) || options.minEdgeFraction > 0.01)
         return Status::error("minEdgeFraction must be in (0, 0.01]");
     if (sweep.triangles().empty())
@@ -86,6 +88,7 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
     DecomposeOptions decompose;
     decompose.symmetricFaces = hybrid && options.triangulation == FaceTriangulation::Enhanced;
     decompose.sweep = &sweep;
+    decompose.faceNodeAdvantage = options.faceNodeAdvantage;
     Decomposition decomposition;
     if (Status s = decomposeTets(m_mesh, selection, decompose, decomposition, changes); !s.ok()) {
         rollback();

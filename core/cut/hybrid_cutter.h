@@ -20,6 +20,10 @@ struct CutOptions {
     FaceTriangulation triangulation = FaceTriangulation::Enhanced;
     /// Cut-node threshold as a fraction of the mean edge length (the paper: one fifth).
     double d = 0.2;
+    /// Enhanced faces: how much better a face node's triangles must be than the better
+    /// diagonal's for the face node to be used (0: always, the paper's plain symmetric rule;
+    /// see decompose_tets.h).
+    double faceNodeAdvantage = 1.5;
     /// Smallest fraction of an edge a split may cut off (see select_cut_nodes.h).
     double minEdgeFraction = 1e-6;
 };

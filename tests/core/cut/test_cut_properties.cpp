@@ -79,6 +79,7 @@ private slots:
         QTest::addColumn<CutMethod>("method");
         QTest::addColumn<FaceTriangulation>("triangulation");
         QTest::addColumn<SweepKind>("kind");
+        QTest::addColumn<double>("advantage");
         const std::pair<const char*, SweepKind> kinds[] = {
             {"planar", SweepKind::PlanarComplete},      {"planar partial", SweepKind::PlanarPartial},
             {"curved", SweepKind::CurvedComplete},      {"multi-pose", SweepKind::MultiPoseComplete},
@@ -86,11 +87,13 @@ private slots:
         for (double scale : {1e-3, 1.0, 1e3})
             for (const auto& [kname, kind] : kinds) {
                 QTest::addRow("%s, subdivision, %g", kname, scale)
-                    << scale << CutMethod::Subdivision << FaceTriangulation::Standard << kind;
+                    << scale << CutMethod::Subdivision << FaceTriangulation::Standard << kind << 1.5;
                 QTest::addRow("%s, hybrid standard, %g", kname, scale)
-                    << scale << CutMethod::Hybrid << FaceTriangulation::Standard << kind;
+                    << scale << CutMethod::Hybrid << FaceTriangulation::Standard << kind << 1.5;
                 QTest::addRow("%s, hybrid enhanced, %g", kname, scale)
-                    << scale << CutMethod::Hybrid << FaceTriangulation::Enhanced << kind;
+                    << scale << CutMethod::Hybrid << FaceTriangulation::Enhanced << kind << 1.5;
+                QTest::addRow("%s, hybrid plain symmetric, %g", kname, scale)
+                    << scale << CutMethod::Hybrid << FaceTriangulation::Enhanced << kind << 0.0;
             }
     }
     void randomSweeps() {
@@ -98,6 +101,7 @@ private slots:
         QFETCH(CutMethod, method);
         QFETCH(FaceTriangulation, triangulation);
         QFETCH(SweepKind, kind);
+        QFETCH(double, advantage);
         const bool partial = kind == SweepKind::PlanarPartial || kind == SweepKind::CurvedPartial;
         for (unsigned seed = 1; seed <= 8; ++seed) {
             TetMesh mesh = jitteredBox(scale, seed);
@@ -108,6 +112,7 @@ private slots:
             CutOptions options;
             options.method = method;
             options.triangulation = triangulation;
+            options.faceNodeAdvantage = advantage;
             CutResult result;
             const Status st = cutter.cut(sweep, options, result);
             QVERIFY2(st.ok(), qPrintable(QString("seed %1: %2").arg(seed).arg(st.message().c_str())));

@@ -206,23 +206,28 @@ private slots:
 
     void twoTetsShareTheirFaceTriangulation_data() {
         QTest::addColumn<bool>("enhanced");
-        QTest::newRow("standard") << false;
-        QTest::newRow("enhanced") << true;
+        QTest::addColumn<double>("advantage");
+        QTest::newRow("standard") << false << 0.0;
+        QTest::newRow("enhanced, plain symmetric faces") << true << 0.0;
+        QTest::newRow("enhanced, face nodes where clearly better") << true << 1.5;
     }
     void twoTetsShareTheirFaceTriangulation() {
         // Two tets on face (0, 1, 2); a plane cuts both through that face: the face's
         // triangulation must agree from both sides (no T-junction, no over-shared face).
         QFETCH(bool, enhanced);
+        QFETCH(double, advantage);
         TetMesh mesh = TetMesh::fromArrays({Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0), Vec3(0.5, 0.5, 1.5),
                                             Vec3(0.6, 0.4, -1.5)},
                                            {{0, 1, 2, 3}, {0, 2, 1, 4}});
         const SweepSurface sweep = quadSweep(Vec3(0.4, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), -3, 3, -3, 3);
         CutOptions options = hybrid(enhanced ? FaceTriangulation::Enhanced : FaceTriangulation::Standard);
         options.d = 0.05;
+        options.faceNodeAdvantage = advantage;
         const Outcome o = run(mesh, sweep, options);
         QVERIFY2(o.violations.isEmpty(), qPrintable(o.violations));
         QCOMPARE(o.pieces, 2);
-        QCOMPARE(o.result.stats.faceNodes > 0, enhanced);
+        if (!enhanced || advantage == 0)  // plain symmetric: every face prism gets a node
+            QCOMPARE(o.result.stats.faceNodes > 0, enhanced);
     }
 
     void failedCutLeavesMeshUnchanged() {
