@@ -1,0 +1,185 @@
+// End-to-end tests of `resect cut`: the report of DESIGN.md, several sweeps in a row,
+// methods, and bad input (exit code 2, one line naming the file or option).
+#include "core/mesh/box_mesh.h"
+#include "core/mesh/masses.h"
+#include "core/mesh/topology.h"
+#include "core/mesh/validity.h"
+#include "scenario/mesh_io.h"
+
+#include <QCryptographicHash>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace resect;
+
+namespace {
+
+struct Run {
+    int code = -1;
+    QString out, err;
+};
+
+Run runCli(const QStringList& args) {
+    QProcess p;
+    p.start(RESECT_CLI, args);
+    Run r;
+    if (!p.waitForFinished(300000)) {
+        p.kill();
+        return r;
+    }
+    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+void write(const QString& path, const QByteArray& text) {
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(text);
+}
+
+QByteArray sha(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? QCryptographicHash::hash(f.readAll(), QCryptographicHash::Sha256) : QByteArray();
+}
+
+/// A nearly horizontal planar sweep from z = h to z = h + 0.1 across the 2 x 2 x 1 box
+/// (start and end curve along x); node layers are at multiples of 1/3.
+QByteArray planeSweep(double h) {
+    return QString(R"({"curves": [[[-1, -1, %1], [1, -1, %1], [3, -1, %1]], [[-1, 3, %2], [1, 3, %2], [3, 3, %2]]]})")
+        .arg(h)
+        .arg(h + 0.1)
+        .toUtf8();
+}
+
+} // namespace
+
+class TestCliCut : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+    QString path(const QString& n) const { return m_dir.filePath(n); }
+
+private slots:
+    void initTestCase() {
+        TetMesh m = makeBoxTetMesh(Vec3::Zero(), Vec3(2, 2, 1), 6, 6, 3);
+        computeLumpedMasses(m, 1e-3);
+        QVERIFY(writeVtu(path("box.vtu").toStdString(), m).ok());
+        write(path("low.json"), planeSweep(0.45));
+        write(path("high.json"), planeSweep(0.78));
+    }
+
+    void reportHasTheContractKeys() {
+        const QByteArray before = sha(path("box.vtu"));
+        const Run r = runCli({"cut", path("box.vtu"), "--sweep", path("low.json"), "--out", path("cut.vtu"),
+                              "--report", path("report.json")});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QCOMPARE(sha(path("box.vtu")), before);  // input untouched
+        QFile f(path("report.json"));
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QJsonObject rep = QJsonDocument::fromJson(f.readAll()).object();
+        QCOMPARE(rep["method"].toString(), QString("hybrid"));
+        QCOMPARE(rep["triangulation"].toString(), QString("enhanced"));
+        QCOMPARE(rep["d"].toDouble(), 0.2);
+        for (const char* side : {"before", "after"}) {
+            const QJsonObject o = rep[side].toObject();
+            for (const char* key : {"nodes", "edges", "tets", "volume", "mass", "min_radius_ratio", "volume_ratio",
+                                    "edge_ratio", "stable_dt"})
+                QVERIFY2(o.contains(key), key);
+        }
+        const QJsonObject after = rep["after"].toObject(), beforeStats = rep["before"].toObject();
+        QCOMPARE(after["pieces"].toInt(), 2);
+        QCOMPARE(after["inverted"].toInt(), 0);
+        QVERIFY(std::abs(after["volume"].toDouble() - 4.0) < 4e-9);
+        QVERIFY(std::abs(after["mass"].toDouble() - beforeStats["mass"].toDouble()) < 1e-9 * 4e-3);
+        QVERIFY(after["tets"].toInt() > beforeStats["tets"].toInt());
+        const QJsonObject cut = rep["cut"].toObject();
+        for (const char* key : {"cut_edges", "cut_nodes", "snapped_nodes", "refused_snaps", "decomposed_tets",
+                                "separated_tets", "max_cut_node_distance"})
+            QVERIFY2(cut.contains(key), key);
+        for (const char* key : {"intersect", "select", "decompose", "snap", "relax", "update", "total"})
+            QVERIFY2(cut["time_ms"].toObject().contains(key), key);
+        QVERIFY(cut["cut_edges"].toInt() > 0);
+        // The written mesh is valid and in two pieces.
+        TetMesh m;
+        QVERIFY(readTetMesh(path("cut.vtu").toStdString(), m).ok());
+        QVERIFY(checkValidity(m).empty());
+        QCOMPARE(connectedComponents(m).count, 2);
+    }
+
+    void severalSweepsInARow() {
+        const Run r = runCli({"cut", path("box.vtu"), "--sweep", path("low.json"), "--sweep", path("high.json"),
+                              "--out", path("two.vtu")});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        TetMesh m;
+        QVERIFY(readTetMesh(path("two.vtu").toStdString(), m).ok());
+        QCOMPARE(connectedComponents(m).count, 3);
+        QVERIFY(checkValidity(m).empty());
+    }
+
+    void subdivisionAddsMoreTets() {
+        // Just above the node layer z = 1/3: hybrid separates those nodes, subdivision
+        // splits every crossed edge close to them.
+        write(path("near.json"), planeSweep(0.34));
+        QVERIFY(runCli({"cut", path("box.vtu"), "--sweep", path("near.json"), "--out", path("h.vtu")}).code == 0);
+        QVERIFY(runCli({"cut", path("box.vtu"), "--sweep", path("near.json"), "--out", path("s.vtu"), "--method",
+                        "subdivision"}).code == 0);
+        TetMesh h, s;
+        QVERIFY(readTetMesh(path("h.vtu").toStdString(), h).ok());
+        QVERIFY(readTetMesh(path("s.vtu").toStdString(), s).ok());
+        QVERIFY(s.tetCount() > h.tetCount());
+    }
+
+    void badInput_data() {
+        QTest::addColumn<QStringList>("extra");
+        QTest::addColumn<QByteArray>("sweep");
+        QTest::addColumn<QString>("message");
+        const QByteArray ok = planeSweep(0.45);
+        QTest::newRow("no sweep") << QStringList{} << QByteArray() << "--sweep";
+        QTest::newRow("missing sweep file") << QStringList{"--sweep", "/nonexistent/s.json"} << QByteArray() << "/nonexistent/s.json";
+        QTest::newRow("malformed JSON") << QStringList{} << QByteArray("{\"curves\": [[[0,0,") << "not valid JSON";
+        QTest::newRow("one curve") << QStringList{} << QByteArray(R"({"curves": [[[0,0,0],[1,0,0]]]})") << "two curves";
+        QTest::newRow("curves of different lengths") << QStringList{}
+            << QByteArray(R"({"curves": [[[0,0,0],[1,0,0]], [[0,1,0],[1,1,0],[2,1,0]]]})") << "same number";
+        QTest::newRow("point not a triple") << QStringList{} << QByteArray(R"({"curves": [[[0,0],[1,0,0]], [[0,1,0],[1,1,0]]]})") << "curves[0][0]";
+        QTest::newRow("string coordinate") << QStringList{} << QByteArray(R"({"curves": [[[0,"a",0],[1,0,0]], [[0,1,0],[1,1,0]]]})") << "curves[0][0]";
+        QTest::newRow("zero area") << QStringList{} << QByteArray(R"({"curves": [[[0,0,0],[1,0,0]], [[2,0,0],[3,0,0]]]})") << "zero area";
+        QTest::newRow("d out of range") << QStringList{"--d", "0.9"} << ok << "--d";
+        QTest::newRow("d not a number") << QStringList{"--d", "x"} << ok << "--d";
+        QTest::newRow("unknown method") << QStringList{"--method", "laser"} << ok << "--method";
+        QTest::newRow("unknown triangulation") << QStringList{"--triangulation", "fancy"} << ok << "--triangulation";
+        QTest::newRow("snapping not available") << QStringList{"--snap"} << ok << "--snap";
+        QTest::newRow("surface not available") << QStringList{"--surface", "x.obj"} << ok << "--surface";
+    }
+    void badInput() {
+        QFETCH(QStringList, extra);
+        QFETCH(QByteArray, sweep);
+        QFETCH(QString, message);
+        QStringList args{"cut", path("box.vtu"), "--out", path("never.vtu")};
+        if (!sweep.isEmpty()) {
+            write(path("bad.json"), sweep);
+            args << "--sweep" << path("bad.json");
+        }
+        args << extra;
+        const Run r = runCli(args);
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+        QCOMPARE(r.err.trimmed().count('\n'), 0);
+        QVERIFY(!QFile::exists(path("never.vtu")));
+    }
+
+    void refusesToOverwriteItsInput() {
+        const QByteArray before = sha(path("box.vtu"));
+        const Run r = runCli({"cut", path("box.vtu"), "--sweep", path("low.json"), "--out", path("box.vtu")});
+        QCOMPARE(r.code, 2);
+        QCOMPARE(sha(path("box.vtu")), before);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliCut)
+#include "test_cli_cut.moc"

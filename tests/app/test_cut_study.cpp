@@ -1,0 +1,55 @@
+// The Table 1 reproduction (section 6) on the built-in samples, with the targets of the
+// hybrid-cut issue: hybrid (enhanced) adds at most 0.6 times the tets subdivision adds and
+// keeps the minimum radius ratio at least 0.3 times the input's; subdivision, for contrast,
+// loses most of the input's quality and stable time step.
+#include "scenario/anatomy.h"
+#include "scenario/cut_study.h"
+
+#include <QTest>
+
+using namespace resect;
+
+class TestCutStudy : public QObject {
+    Q_OBJECT
+private slots:
+    void table1Targets_data() {
+        QTest::addColumn<QString>("sample");
+        QTest::addColumn<double>("height");
+        QTest::newRow("polyp") << "polyp" << 0.35;
+        QTest::newRow("myoma") << "myoma" << 0.55;
+    }
+    void table1Targets() {
+        QFETCH(QString, sample);
+        QFETCH(double, height);
+        TriangleSurface surface;
+        QVERIFY(loadAnatomy("sample:" + sample.toStdString(), surface).ok());
+        TetMesh mesh;
+        AnatomyMeshing options;
+        QVERIFY(meshAnatomy(surface, options, mesh).ok());
+        CutStudy study;
+        const Status s = runCutStudy(mesh, loopScoopSweep(mesh, height), 0.2, options.material, study);
+        QVERIFY2(s.ok(), s.message().c_str());
+        QCOMPARE(int(study.columns.size()), 4);
+        const StudyColumn& original = study.columns[0];
+        const StudyColumn& subdivision = study.columns[1];
+        const StudyColumn& enhanced = study.columns[3];
+        qInfo().noquote() << "\n" << QString::fromStdString(formatCutStudy(study));
+        for (std::size_t i = 1; i < study.columns.size(); ++i) {
+            QCOMPARE(study.columns[i].pieces, 2);
+            QVERIFY(std::abs(study.columns[i].quality.volume - original.quality.volume) <= 1e-9 * original.quality.volume);
+        }
+        const int subdivisionAdded = subdivision.quality.tets - original.quality.tets;
+        const int hybridAdded = enhanced.quality.tets - original.quality.tets;
+        QVERIFY(subdivisionAdded > 0);
+        QVERIFY2(hybridAdded <= 0.6 * subdivisionAdded,
+                 qPrintable(QString("hybrid added %1, subdivision %2").arg(hybridAdded).arg(subdivisionAdded)));
+        QVERIFY2(enhanced.quality.minRadiusRatio >= 0.3 * original.quality.minRadiusRatio,
+                 qPrintable(QString("min radius ratio %1 vs input %2")
+                                .arg(enhanced.quality.minRadiusRatio).arg(original.quality.minRadiusRatio)));
+        QVERIFY(subdivision.quality.minRadiusRatio < 0.1 * original.quality.minRadiusRatio);
+        QVERIFY(enhanced.stableDt > 10 * subdivision.stableDt);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCutStudy)
+#include "test_cut_study.moc"
