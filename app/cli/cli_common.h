@@ -58,5 +58,6 @@ int runMesh(Args args);
 int runDemo(Args args);
 int runCut(Args args);
 int runTable1(Args args);
+int runBench(Args args);
 
 } // namespace resect::cli

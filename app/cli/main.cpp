@@ -24,6 +24,8 @@ commands:
                                     cut along one or more sweep surfaces, one after another
   table1 [--sample polyp|myoma ...] [--d 0.2] [--out TABLE.md]
                                     the paper's Table 1 on the built-in samples
+  bench cut-scaling [--sizes 10000,100000,1000000] [--repeats 7] [--out scaling.csv]
+                                    the same local cut on meshes of growing size
 
 exit codes: 0 success, 2 bad input, 1 internal failure
 )";
@@ -51,6 +53,8 @@ int main(int argc, char** argv) {
             return runCut(Args(args));
         if (command == "table1")
             return runTable1(Args(args));
+        if (command == "bench")
+            return runBench(Args(args));
         throw CliError{kBadInput, "unknown command '" + command + "' (try resect --help)"};
     } catch (const CliError& e) {
         std::fprintf(stderr, "resect %s: %s\n", command.c_str(), e.message.c_str());

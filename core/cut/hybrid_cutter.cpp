@@ -22,6 +22,9 @@ double msSince(std::chrono::steady_clock::time_point t0) {
 } // namespace
 
 HybridCutter::HybridCutter(TetMesh& mesh) : m_mesh(mesh) {
+    // Headroom for the nodes and tets cuts add, so that a cut never pays for reallocating
+    // the whole mesh (growth beyond it is amortised as usual).
+    mesh.reserve(mesh.nodeCount() + mesh.nodeCount() / 4 + 1024, mesh.tetCount() + mesh.tetCount() / 4 + 4096);
     m_grid.build(mesh);
     m_meanEdge = resect::meanEdgeLength(mesh);
 }

@@ -1,0 +1,92 @@
+// resect bench cut-scaling [--sizes 10000,100000,1000000] [--repeats 7] [--out scaling.csv]
+// The same local cut on structured meshes of growing size: the cut must cost in proportion to
+// the tets it touches, not to the mesh size. (The full accuracy-versus-time study comes with
+// the benchmark issue.)
+#include "app/cli/cli_common.h"
+
+#include "core/cut/hybrid_cutter.h"
+#include "core/mesh/box_mesh.h"
+#include "scenario/atomic_file.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace resect::cli {
+
+namespace {
+
+int runCutScaling(Args& args) {
+    std::vector<int> sizes{10000, 100000, 1000000};
+    if (auto text = args.option("--sizes")) {
+        sizes.clear();
+        std::stringstream ss(*text);
+        std::string item;
+        while (std::getline(ss, item, ',')) {
+            char* end = nullptr;
+            const long v = std::strtol(item.c_str(), &end, 10);
+            if (end == item.c_str() || *end != 0 || v < 6 || v > 20000000)
+                badInput("--sizes: expected tet counts between 6 and 2e7, got '" + item + "'");
+            sizes.push_back(static_cast<int>(v));
+        }
+    }
+    const int repeats = args.integer("--repeats", 1, 1000).value_or(7);
+    const auto out = args.option("--out");
+    const auto what = args.positionals();
+    args.finish();
+    if (what.size() != 1 || what[0] != "cut-scaling")
+        badInput("expected a study name: cut-scaling");
+
+    std::string csv = "mesh_tets,touched_tets,added_tets,cut_ms_median,cut_ms_min,us_per_touched_tet\n";
+    std::printf("%10s %12s %10s %14s %12s %18s\n", "mesh_tets", "touched_tets", "added", "cut_ms_median",
+                "cut_ms_min", "us_per_touched_tet");
+    for (int target : sizes) {
+        // n^3 unit cubes of 6 tets each; the sweep is a 4 x 4 cube patch in the middle, so
+        // every mesh sees the same local cut.
+        const int n = std::max(1, static_cast<int>(std::lround(std::cbrt(target / 6.0))));
+        const TetMesh base = makeBoxTetMesh(Vec3::Zero(), Vec3::Constant(n), n, n, n);
+        const double c = 0.5 * n;
+        const std::vector<Vec3> start{Vec3(c - 2, c - 2, c + 0.37), Vec3(c + 2, c - 2, c + 0.41)};
+        const std::vector<Vec3> end{Vec3(c - 2, c + 2, c + 0.45), Vec3(c + 2, c + 2, c + 0.49)};
+        SweepSurface sweep;
+        requireOk(SweepSurface::fromStartEnd(start, end, sweep));
+        std::vector<double> times;
+        int touched = 0, added = 0;
+        for (int r = 0; r < repeats; ++r) {
+            TetMesh mesh = base;
+            HybridCutter cutter(mesh);  // grid and mean edge: once per loaded mesh, not per cut
+            CutResult result;
+            if (Status s = cutter.cut(sweep, CutOptions{}, result); !s.ok())
+                throw CliError{kInternal, s.message()};
+            times.push_back(result.stats.timeMs.total);
+            touched = result.stats.touchedTets;
+            added = result.stats.addedTets;
+        }
+        std::sort(times.begin(), times.end());
+        const double median = times[times.size() / 2];
+        char line[256];
+        std::snprintf(line, sizeof line, "%d,%d,%d,%.4f,%.4f,%.3f\n", base.tetCount(), touched, added, median,
+                      times.front(), 1000.0 * median / std::max(1, touched));
+        csv += line;
+        std::printf("%10d %12d %10d %14.4f %12.4f %18.3f\n", base.tetCount(), touched, added, median, times.front(),
+                    1000.0 * median / std::max(1, touched));
+        std::fflush(stdout);
+    }
+    if (out)
+        requireOk(writeAtomically(*out, [&](const std::string& tmp) {
+            std::ofstream f(tmp, std::ios::binary);
+            f << csv;
+            f.close();
+            return f ? Status::success() : Status::error(*out + ": cannot write");
+        }));
+    return kOk;
+}
+
+} // namespace
+
+int runBench(Args args) { return runCutScaling(args); }
+
+} // namespace resect::cli
