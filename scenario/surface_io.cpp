@@ -1,1 +1,421 @@
-// placeholder: being written
+// Triangle surfaces through assimp. Reading: every mesh instance of the node hierarchy,
+// transformed to world coordinates, triangulated (aiProcess_Triangulate), points and lines
+// dropped, vertices welded by exact position. Writing: a one-mesh aiScene exported with
+// the exporter chosen by extension (OFF, which this assimp build cannot export, is written
+// directly), always through writeAtomically.
+//
+// assimp logs through DefaultLogger, which is a NullLogger unless some code calls
+// DefaultLogger::create(); this file never creates one, so nothing is printed.
+
+#include "scenario/surface_io.h"
+
+#include "scenario/atomic_file.h"
+#include "scenario/mesh_io_detail.h"
+
+#include <assimp/Exporter.hpp>
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <cctype>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+namespace resect {
+namespace {
+
+namespace fs = std::filesystem;
+using detail::lowerExtension;
+
+// ---------------------------------------------------------------------------------------
+// Reading
+
+/// Hash of a position by its exact bit pattern (-0 is normalised to +0 by the caller).
+struct ExactPositionHash {
+    std::size_t operator()(const Vec3& p) const {
+        std::size_t h = 0;
+        for (int i = 0; i < 3; ++i) {
+            std::uint64_t bits = 0;
+            const double v = p[i];
+            std::memcpy(&bits, &v, sizeof bits);
+            h ^= std::hash<std::uint64_t>{}(bits) + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+        }
+        return h;
+    }
+};
+struct ExactPositionEqual {
+    bool operator()(const Vec3& a, const Vec3& b) const {
+        return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
+    }
+};
+
+/// Accumulates welded vertices and triangles from the mesh instances of a scene.
+class SurfaceBuilder {
+public:
+    explicit SurfaceBuilder(const std::string& path) : m_path(path) {}
+
+    /// Adds the triangles of `mesh` with its vertices transformed by `toWorld`.
+    Status addMesh(const aiMesh& mesh, const aiMatrix4x4& toWorld) {
+        const bool hasUv = mesh.HasTextureCoords(0) && mesh.mNumUVComponents[0] >= 2;
+        bool addedAny = false;
+        m_remap.assign(mesh.mNumVertices, -1);
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+            const aiFace& face = mesh.mFaces[f];
+            if (face.mNumIndices != 3)
+                continue; // points and lines (polygons were triangulated)
+            Tri tri;
+            for (int k = 0; k < 3; ++k) {
+                const unsigned v = face.mIndices[k];
+                if (v >= mesh.mNumVertices)
+                    return Status::error(m_path + ": a face refers to a missing vertex");
+                if (m_remap[v] < 0) {
+                    const aiVector3D w = toWorld * mesh.mVertices[v];
+                    // + 0.0 turns -0 into +0 so that both weld together.
+                    const Vec3 p(double(w.x) + 0.0, double(w.y) + 0.0, double(w.z) + 0.0);
+                    if (!p.allFinite())
+                        return Status::error(m_path + ": a vertex has a non-finite coordinate");
+                    const auto [it, inserted] =
+                        m_index.try_emplace(p, static_cast<int>(m_surface.positions.size()));
+                    if (inserted) {
+                        m_surface.positions.push_back(p);
+                        const Eigen::Vector2d uv =
+                            hasUv ? Eigen::Vector2d(mesh.mTextureCoords[0][v].x,
+                                                    mesh.mTextureCoords[0][v].y)
+                                  : Eigen::Vector2d::Zero();
+                        m_surface.uvs.push_back(uv); // kept only if every mesh has uvs
+                    }
+                    m_remap[v] = it->second;
+                }
+                tri[k] = m_remap[v];
+            }
+            addedAny = true;
+            // Welding can collapse a triangle whose corners coincide: drop it.
+            if (tri[0] != tri[1] && tri[1] != tri[2] && tri[2] != tri[0])
+                m_surface.triangles.push_back(tri);
+        }
+        if (addedAny && !hasUv)
+            m_allHaveUv = false;
+        return Status::success();
+    }
+
+    /// Walks the node hierarchy, adding every mesh instance in world coordinates.
+    Status addNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, int depth) {
+        // assimp validates the scene graph, but a cycle would recurse forever: bound it.
+        constexpr int kMaxNodeDepth = 1000;
+        if (depth > kMaxNodeDepth)
+            return Status::error(m_path + ": the node hierarchy is too deep");
+        const aiMatrix4x4 toWorld = parent * node.mTransformation;
+        for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+            const unsigned m = node.mMeshes[i];
+            if (m >= scene.mNumMeshes || !scene.mMeshes[m])
+                return Status::error(m_path + ": a node refers to a missing mesh");
+            if (Status s = addMesh(*scene.mMeshes[m], toWorld); !s)
+                return s;
+        }
+        for (unsigned c = 0; c < node.mNumChildren; ++c)
+            if (node.mChildren[c])
+                if (Status s = addNode(scene, *node.mChildren[c], toWorld, depth + 1); !s)
+                    return s;
+        return Status::success();
+    }
+
+    Status finish(TriangleSurface& out) {
+        if (m_surface.triangles.empty())
+            return Status::error(m_path + ": no triangles");
+        if (!m_allHaveUv)
+            m_surface.uvs.clear();
+        out = std::move(m_surface);
+        return Status::success();
+    }
+
+private:
+    std::string m_path;
+    TriangleSurface m_surface;
+    std::unordered_map<Vec3, int, ExactPositionHash, ExactPositionEqual> m_index;
+    std::vector<int> m_remap; // per vertex of the current mesh: welded index or -1
+    bool m_allHaveUv = true;
+};
+
+/// Sets every mesh's mPrimitiveTypes from its faces (points, lines, triangles, polygons),
+/// checking that each face has indices and that they exist. The scene belongs to the
+/// importer, which hands it out as const but lets post-processing steps change it.
+Status repairPrimitiveTypes(const std::string& path, const aiScene& scene) {
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        aiMesh* mesh = scene.mMeshes[m];
+        if (!mesh)
+            return Status::error(path + ": a mesh is missing");
+        unsigned types = 0;
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            const aiFace& face = mesh->mFaces[f];
+            if (face.mNumIndices == 0 || !face.mIndices)
+                return Status::error(path + ": a face has no vertices");
+            for (unsigned k = 0; k < face.mNumIndices; ++k)
+                if (face.mIndices[k] >= mesh->mNumVertices)
+                    return Status::error(path + ": a face refers to a missing vertex");
+            types |= face.mNumIndices == 1   ? aiPrimitiveType_POINT
+                     : face.mNumIndices == 2 ? aiPrimitiveType_LINE
+                     : face.mNumIndices == 3 ? aiPrimitiveType_TRIANGLE
+                                             : aiPrimitiveType_POLYGON;
+        }
+        mesh->mPrimitiveTypes = types;
+    }
+    return Status::success();
+}
+
+/// assimp 5.2's PLY reader loops forever on a header without "end_header" (a truncated
+/// file): check PLY files for it first. The header is ASCII in every PLY variant.
+Status checkPlyHeader(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string head(3, '\0');
+    if (!in.read(head.data(), 3) || head != "ply")
+        return Status::success(); // not a PLY file: assimp decides
+    // The header declares elements and properties line by line; this is far more than any
+    // real header needs.
+    constexpr std::size_t kMaxHeaderBytes = 1 << 20;
+    std::string header(kMaxHeaderBytes, '\0');
+    in.read(header.data(), static_cast<std::streamsize>(header.size()));
+    header.resize(static_cast<std::size_t>(in.gcount()));
+    // A line that is "end_header", possibly followed by blanks (assimp's own test).
+    for (std::size_t at = header.find("\nend_header"); at != std::string::npos;
+         at = header.find("\nend_header", at + 1)) {
+        const std::size_t after = at + 11;
+        if (after == header.size() || std::isspace(static_cast<unsigned char>(header[after])))
+            return Status::success();
+    }
+    return Status::error(path + ": damaged PLY file (its header has no end_header line)");
+}
+
+Status readSurfaceImpl(const std::string& path, TriangleSurface& out) {
+    if (Status s = detail::checkRegularFile(path); !s)
+        return s;
+    if (Status s = checkPlyHeader(path); !s)
+        return s;
+    Assimp::Importer importer;
+    const auto failure = [&] {
+        const char* why = importer.GetErrorString();
+        return Status::error(path + ": assimp cannot read the file (" +
+                             (why && *why ? std::string(why) : std::string("unknown error")) + ")");
+    };
+    // Import and validate first, triangulate second: Debian's assimp 5.2 is built with
+    // assertions that abort the process when a damaged file leaves a mesh's primitive types
+    // disagreeing with its faces, so those are made consistent in between.
+    const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+    if (!scene)
+        return failure();
+    if (Status s = repairPrimitiveTypes(path, *scene); !s)
+        return s;
+    scene = importer.ApplyPostProcessing(aiProcess_Triangulate);
+    if (!scene)
+        return failure();
+    if (!scene->mRootNode)
+        return Status::error(path + ": no triangles");
+    SurfaceBuilder builder(path);
+    if (Status s = builder.addNode(*scene, *scene->mRootNode, aiMatrix4x4(), 0); !s)
+        return s;
+    return builder.finish(out);
+}
+
+// ---------------------------------------------------------------------------------------
+// Writing
+
+/// A one-mesh, one-material scene holding the surface (vertices as float, as assimp keeps
+/// them). aiScene's destructor frees everything allocated here with new / new[].
+std::unique_ptr<aiScene> makeScene(const TriangleSurface& surface) {
+    auto scene = std::make_unique<aiScene>();
+    scene->mRootNode = new aiNode();
+    scene->mRootNode->mNumMeshes = 1;
+    scene->mRootNode->mMeshes = new unsigned[1]{0};
+
+    scene->mNumMaterials = 1;
+    scene->mMaterials = new aiMaterial* [1] { new aiMaterial() };
+
+    scene->mNumMeshes = 1;
+    scene->mMeshes = new aiMesh* [1] { new aiMesh() };
+    aiMesh& mesh = *scene->mMeshes[0];
+    mesh.mMaterialIndex = 0;
+    mesh.mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
+    mesh.mNumVertices = static_cast<unsigned>(surface.positions.size());
+    mesh.mVertices = new aiVector3D[mesh.mNumVertices];
+    for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
+        const Vec3& p = surface.positions[i];
+        mesh.mVertices[i] = aiVector3D(static_cast<ai_real>(p.x()), static_cast<ai_real>(p.y()),
+                                       static_cast<ai_real>(p.z()));
+    }
+    if (!surface.uvs.empty()) {
+        mesh.mNumUVComponents[0] = 2;
+        mesh.mTextureCoords[0] = new aiVector3D[mesh.mNumVertices];
+        for (unsigned i = 0; i < mesh.mNumVertices; ++i)
+            mesh.mTextureCoords[0][i] = aiVector3D(static_cast<ai_real>(surface.uvs[i].x()),
+                                                   static_cast<ai_real>(surface.uvs[i].y()), 0);
+    }
+    mesh.mNumFaces = static_cast<unsigned>(surface.triangles.size());
+    mesh.mFaces = new aiFace[mesh.mNumFaces];
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        aiFace& face = mesh.mFaces[f];
+        face.mNumIndices = 3;
+        face.mIndices = new unsigned[3];
+        for (int k = 0; k < 3; ++k)
+            face.mIndices[k] = static_cast<unsigned>(surface.triangles[f][k]);
+    }
+    return scene;
+}
+
+/// Exports `scene` with assimp's exporter `formatId` to `file`.
+Status assimpExport(const std::string& path, const aiScene& scene, const char* formatId,
+                    const std::string& file) {
+    Assimp::Exporter exporter;
+    if (exporter.Export(&scene, formatId, file) != aiReturn_SUCCESS) {
+        const char* why = exporter.GetErrorString();
+        return Status::error(path + ": assimp cannot write the file (" +
+                             (why && *why ? std::string(why) : std::string("unknown error")) + ")");
+    }
+    return Status::success();
+}
+
+/// Text glTF keeps its buffer in a second file named after the .gltf (NAME.bin) and refers
+/// to it by that name. So it is exported under the final name into a private folder next
+/// to the target; the buffer is then renamed next to the target (replacing an older one
+/// atomically) and the .gltf moved to `tmpPath`, which writeAtomically renames last.
+Status exportGltfText(const std::string& path, const aiScene& scene, const std::string& tmpPath) {
+    const fs::path target(path);
+    const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    std::string pattern = (folder / ("." + target.stem().string() + ".tmp-XXXXXX")).string();
+    if (!mkdtemp(pattern.data()))
+        return Status::error(path + ": cannot create a temporary folder in " + folder.string());
+    const fs::path privateDir(pattern);
+    struct Cleanup {
+        fs::path dir;
+        ~Cleanup() {
+            std::error_code ec;
+            fs::remove_all(dir, ec);
+        }
+    } cleanup{privateDir};
+
+    const fs::path exported = privateDir / target.filename();
+    if (Status s = assimpExport(path, scene, "gltf2", exported.string()); !s)
+        return s;
+    std::vector<fs::path> buffers;
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(privateDir, ec))
+        if (e.path() != exported)
+            buffers.push_back(e.path());
+    if (ec)
+        return Status::error(path + ": cannot list the temporary folder (" + ec.message() + ")");
+    for (const fs::path& b : buffers) {
+        fs::rename(b, folder / b.filename(), ec);
+        if (ec)
+            return Status::error(path + ": cannot move " + b.filename().string() + " next to it (" +
+                                 ec.message() + ")");
+    }
+    fs::rename(exported, tmpPath, ec);
+    if (ec)
+        return Status::error(path + ": cannot move the written file (" + ec.message() + ")");
+    return Status::success();
+}
+
+/// OFF (Object File Format), ASCII: "OFF", "V F 0", V lines "x y z", F lines "3 a b c".
+/// Coordinates are written with 17 significant digits, so doubles round-trip exactly.
+Status writeOff(const std::string& path, const TriangleSurface& surface, const std::string& file) {
+    std::ofstream os(file, std::ios::binary | std::ios::trunc);
+    if (!os)
+        return Status::error(path + ": cannot open the temporary file for writing");
+    os.precision(17);
+    os << "OFF\n" << surface.positions.size() << ' ' << surface.triangles.size() << " 0\n";
+    for (const Vec3& p : surface.positions)
+        os << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+    for (const Tri& t : surface.triangles)
+        os << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    os.close();
+    if (!os)
+        return Status::error(path + ": write error");
+    return Status::success();
+}
+
+/// Checks that the surface can be written: triangles present, indices valid, coordinates
+/// finite, uvs empty or one per vertex.
+Status checkWritable(const std::string& path, const TriangleSurface& surface) {
+    if (surface.triangles.empty())
+        return Status::error(path + ": cannot write a surface without triangles");
+    if (!surface.uvs.empty() && surface.uvs.size() != surface.positions.size())
+        return Status::error(path + ": the surface has " + std::to_string(surface.uvs.size()) +
+                             " texture coordinates for " +
+                             std::to_string(surface.positions.size()) + " vertices");
+    const auto n = static_cast<int>(surface.positions.size());
+    for (std::size_t f = 0; f < surface.triangles.size(); ++f)
+        for (int v : surface.triangles[f])
+            if (v < 0 || v >= n)
+                return Status::error(path + ": triangle " + std::to_string(f) +
+                                     " refers to vertex " + std::to_string(v) + " of " +
+                                     std::to_string(n));
+    for (std::size_t i = 0; i < surface.positions.size(); ++i)
+        if (!surface.positions[i].allFinite())
+            return Status::error(path + ": vertex " + std::to_string(i) +
+                                 " has a non-finite coordinate");
+    return Status::success();
+}
+
+Status writeSurfaceImpl(const std::string& path, const TriangleSurface& surface) {
+    const std::string ext = lowerExtension(path);
+    // Exporter ids of assimp 5.2. OBJ without a .mtl file: a material file would be named
+    // after the temporary file and be left behind.
+    const char* formatId = nullptr;
+    if (ext == ".obj")
+        formatId = "objnomtl";
+    else if (ext == ".stl")
+        formatId = "stlb";
+    else if (ext == ".ply")
+        formatId = "ply";
+    else if (ext == ".glb")
+        formatId = "glb2";
+    else if (ext == ".gltf")
+        formatId = "gltf2";
+    else if (ext != ".off")
+        return Status::error(path + ": unknown surface extension '" + ext +
+                             "'; expected .obj, .stl, .ply, .off, .glb or .gltf");
+    if (Status s = checkWritable(path, surface); !s)
+        return s;
+
+    if (ext == ".off")
+        return writeAtomically(
+            path, [&](const std::string& tmp) { return writeOff(path, surface, tmp); });
+    const std::unique_ptr<aiScene> scene = makeScene(surface);
+    return writeAtomically(path, [&](const std::string& tmp) {
+        if (ext == ".gltf")
+            return exportGltfText(path, *scene, tmp);
+        return assimpExport(path, *scene, formatId, tmp);
+    });
+}
+
+} // namespace
+
+Status readSurface(const std::string& path, TriangleSurface& out) {
+    try {
+        return readSurfaceImpl(path, out);
+    } catch (const std::bad_alloc&) {
+        return Status::error(path + ": out of memory while reading");
+    } catch (const std::exception& e) {
+        return Status::error(path + ": " + e.what());
+    } catch (...) {
+        return Status::error(path + ": unknown error while reading");
+    }
+}
+
+Status writeSurface(const std::string& path, const TriangleSurface& surface) {
+    try {
+        return writeSurfaceImpl(path, surface);
+    } catch (const std::bad_alloc&) {
+        return Status::error(path + ": out of memory while writing");
+    } catch (const std::exception& e) {
+        return Status::error(path + ": " + e.what());
+    } catch (...) {
+        return Status::error(path + ": unknown error while writing");
+    }
+}
+
+} // namespace resect

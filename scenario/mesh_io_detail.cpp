@@ -1,0 +1,171 @@
+#include "scenario/mesh_io_detail.h"
+
+#include "core/mesh/masses.h"
+#include "core/mesh/material.h"
+#include "core/mesh/predicates.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <system_error>
+
+namespace resect::detail {
+
+namespace fs = std::filesystem;
+
+Status checkRegularFile(const std::string& path) {
+    std::error_code ec;
+    const fs::file_status st = fs::status(path, ec);
+    if (ec || !fs::exists(st))
+        return Status::error(path + ": no such file");
+    if (!fs::is_regular_file(st))
+        return Status::error(path + ": not a regular file");
+    return Status::success();
+}
+
+Status readWholeFile(const std::string& path, std::string& out) {
+    if (Status s = checkRegularFile(path); !s)
+        return s;
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        return Status::error(path + ": cannot open for reading");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad())
+        return Status::error(path + ": read error");
+    out = std::move(text);
+    return Status::success();
+}
+
+std::string lowerExtension(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+namespace {
+bool isSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
+}
+} // namespace
+
+void splitTokens(std::string_view line, std::vector<std::string_view>& out) {
+    out.clear();
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && isSpace(line[i]))
+            ++i;
+        const std::size_t start = i;
+        while (i < line.size() && !isSpace(line[i]))
+            ++i;
+        if (i > start)
+            out.push_back(line.substr(start, i - start));
+    }
+}
+
+bool parseInt64(std::string_view token, std::int64_t& value) {
+    if (!token.empty() && token.front() == '+')
+        token.remove_prefix(1);
+    if (token.empty())
+        return false;
+    const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    return ec == std::errc() && end == token.data() + token.size();
+}
+
+bool parseDouble(std::string_view token, double& value) {
+    if (!token.empty() && token.front() == '+')
+        token.remove_prefix(1);
+    if (token.empty())
+        return false;
+    const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    return ec == std::errc() && end == token.data() + token.size();
+}
+
+LineReader::LineReader(std::string_view text) : m_text(text) {
+    m_totalLines = std::count(text.begin(), text.end(), '\n');
+    if (!text.empty() && text.back() != '\n')
+        ++m_totalLines;
+}
+
+bool LineReader::next(std::string_view& line) {
+    if (m_pos >= m_text.size())
+        return false;
+    std::size_t end = m_text.find('\n', m_pos);
+    if (end == std::string_view::npos)
+        end = m_text.size();
+    line = m_text.substr(m_pos, end - m_pos);
+    if (!line.empty() && line.back() == '\r')
+        line.remove_suffix(1);
+    m_pos = end + 1;
+    ++m_lineNumber;
+    return true;
+}
+
+bool LineReader::nextContent(std::string_view& line, char comment) {
+    while (next(line)) {
+        if (comment != '\0') {
+            const std::size_t c = line.find(comment);
+            if (c != std::string_view::npos)
+                line = line.substr(0, c);
+        }
+        if (std::any_of(line.begin(), line.end(), [](char ch) { return !isSpace(ch); }))
+            return true;
+    }
+    return false;
+}
+
+Status finishImportedMesh(const std::string& path, ImportedMesh imported, TetMesh& out) {
+    std::vector<Vec3>& points = imported.points;
+    std::vector<Tet>& tets = imported.tets;
+    const auto label = [&](int t) {
+        return imported.tetLabel ? imported.tetLabel(t) : "tet " + std::to_string(t);
+    };
+    if (tets.empty())
+        return Status::error(path + ": no tetrahedra");
+    if (const std::string bad = checkTetIndices(static_cast<int>(points.size()), tets);
+        !bad.empty())
+        return Status::error(path + ": " + bad);
+    for (std::size_t n = 0; n < points.size(); ++n)
+        if (!points[n].allFinite())
+            return Status::error(path + ": node " + std::to_string(n) +
+                                 " has a non-finite coordinate");
+
+    // Orientation, exact: positive is kept, negative is repaired by swapping two nodes
+    // (which flips the sign of the determinant), zero volume cannot be repaired.
+    for (std::size_t t = 0; t < tets.size(); ++t) {
+        Tet& q = tets[t];
+        const int o = orient3d(points[q[0]], points[q[1]], points[q[2]], points[q[3]]);
+        if (o == 0)
+            return Status::error(path + ": " + label(static_cast<int>(t)) +
+                                 " has zero volume (its four nodes are coplanar)");
+        if (o < 0)
+            std::swap(q[2], q[3]);
+    }
+
+    // Keep only nodes used by a tet, in file order: an unused node would get zero mass.
+    std::vector<int> newIndex(points.size(), -1);
+    for (const Tet& q : tets)
+        for (int v : q)
+            newIndex[v] = 0;
+    std::vector<Vec3> used;
+    used.reserve(points.size());
+    for (std::size_t n = 0; n < points.size(); ++n)
+        if (newIndex[n] == 0) {
+            newIndex[n] = static_cast<int>(used.size());
+            used.push_back(points[n]);
+        }
+    for (Tet& q : tets)
+        for (int& v : q)
+            v = newIndex[v];
+
+    TetMesh mesh = TetMesh::fromArrays(std::move(used), std::move(tets));
+    computeLumpedMasses(mesh, Material{}.density);
+    out = std::move(mesh);
+    return Status::success();
+}
+
+} // namespace resect::detail
