@@ -1,5 +1,6 @@
 // resect cut MESH --sweep S.json [--sweep S2.json ...] --out OUT.vtu [--report R.json]
 //            [--method hybrid|subdivision] [--triangulation enhanced|standard] [--d 0.2]
+//            [--snap | --no-snap]
 #include "app/cli/cli_common.h"
 
 #include "core/cut/hybrid_cutter.h"
@@ -39,11 +40,12 @@ int runCut(Args args) {
         badInput("--triangulation enhanced applies to the hybrid method only");
     if (auto d = args.number("--d", 0.0, 0.5))
         options.d = *d;
-    // Snapping and relaxation (section 4.5-4.6) are not part of this build yet: refuse the
-    // options rather than ignore them.
-    for (const char* opt : {"--snap", "--no-snap"})
-        if (args.flag(opt))
-            badInput(std::string(opt) + ": node snapping is not available yet");
+    const bool snap = args.flag("--snap"), noSnap = args.flag("--no-snap");
+    if (snap && noSnap)
+        badInput("--snap and --no-snap contradict each other");
+    options.snap = snap;
+    // Relaxation (section 4.6) and the embedded surface are not part of this build yet:
+    // refuse the options rather than ignore them.
     for (const char* opt : {"--relax-steps", "--w-spring", "--w-particle", "--surface", "--surface-out"})
         if (args.option(opt))
             badInput(std::string(opt) + ": not available yet (relaxation and the embedded surface come later)");
@@ -75,6 +77,9 @@ int runCut(Args args) {
         total.cutEdges += c.cutEdges;
         total.cutNodes += c.cutNodes;
         total.decomposedTets += c.decomposedTets;
+        total.snappedNodes += c.snappedNodes;
+        total.refusedSnaps += c.refusedSnaps;
+        total.timeMs.snap += c.timeMs.snap;
         total.separatedTets += c.separatedTets;
         total.maxCutNodeDistance = std::max(total.maxCutNodeDistance, c.maxCutNodeDistance);
         total.timeMs.intersect += c.timeMs.intersect;
@@ -91,15 +96,15 @@ int runCut(Args args) {
         QJsonObject cut;
         cut["cut_edges"] = total.cutEdges;
         cut["cut_nodes"] = total.cutNodes;
-        cut["snapped_nodes"] = 0;
-        cut["refused_snaps"] = 0;
+        cut["snapped_nodes"] = total.snappedNodes;
+        cut["refused_snaps"] = total.refusedSnaps;
         cut["decomposed_tets"] = total.decomposedTets;
         cut["separated_tets"] = total.separatedTets;
         cut["max_cut_node_distance"] = total.maxCutNodeDistance;
         cut["time_ms"] = QJsonObject{{"intersect", total.timeMs.intersect},
                                      {"select", total.timeMs.select},
                                      {"decompose", total.timeMs.decompose},
-                                     {"snap", 0.0},
+                                     {"snap", total.timeMs.snap},
                                      {"relax", 0.0},
                                      {"update", 0.0},
                                      {"total", total.timeMs.total}};

@@ -20,7 +20,7 @@ commands:
   demo [--out DIR] [--sample NAME]  headless demo: mesh a sample, print its quality,
                                     write the mesh, surface and summary to DIR
   cut MESH --sweep S.json [--sweep S2.json ...] --out OUT.vtu [--report R.json]
-      [--method hybrid|subdivision] [--triangulation enhanced|standard] [--d 0.2]
+      [--method hybrid|subdivision] [--triangulation enhanced|standard] [--d 0.2] [--snap|--no-snap]
                                     cut along one or more sweep surfaces, one after another
   table1 [--sample polyp|myoma ...] [--d 0.2] [--out TABLE.md]
                                     the paper's Table 1 on the built-in samples

@@ -4,6 +4,7 @@
 #include "core/cut/intersect_edges.h"
 #include "core/cut/select_cut_nodes.h"
 #include "core/cut/separate.h"
+#include "core/cut/snap_nodes.h"
 #include "core/mesh/quality.h"
 
 #include <algorithm>
@@ -87,6 +88,10 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
         m_mesh.truncate(nodesBefore, tetsBefore);
     };
 
+    // Cut nodes on the boundary before the cut keep their place when snapping.
+    const std::vector<int> surfaceCutNodes =
+        options.snap ? boundaryNodesAmong(m_mesh, selection.cutNodes) : std::vector<int>{};
+
     t0 = std::chrono::steady_clock::now();
     DecomposeOptions decompose;
     decompose.symmetricFaces = hybrid && options.triangulation == FaceTriangulation::Enhanced;
@@ -104,6 +109,24 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
     stats.faceNodes = decomposition.faceNodes;
     stats.separatedTets = separation.separatedTets;
     stats.duplicatedNodes = separation.duplicatedNodes;
+
+    if (options.snap && !changes.cutNodes.empty()) {
+        t0 = std::chrono::steady_clock::now();
+        SnapOptions snap;
+        snap.qualityFloor = options.snapQualityFloor;
+        const SnapResult snapped = snapNodes(m_mesh, sweep, changes, surfaceCutNodes, snap);
+        stats.snappedNodes = snapped.snapped;
+        stats.refusedSnaps = snapped.refused;
+        stats.maxCutNodeDistance = snapped.maxDistanceAfter;
+        // Tets around moved nodes may have grown out of their grid cells.
+        for (int n : changes.cutNodes)
+            for (int t : m_mesh.nodeTets(n))
+                m_grid.insert(m_mesh, t);
+        for (const auto& [orig, copy] : changes.duplicatedNodes)
+            for (int t : m_mesh.nodeTets(copy))
+                m_grid.insert(m_mesh, t);
+        stats.timeMs.snap = msSince(t0);
+    }
 
     // Change list: modified tets once, cut-surface nodes, nodes whose tets changed.
     std::sort(changes.modifiedTets.begin(), changes.modifiedTets.end());

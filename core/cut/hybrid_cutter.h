@@ -24,6 +24,10 @@ struct CutOptions {
     /// diagonal's for the face node to be used (0: always, the paper's plain symmetric rule;
     /// see decompose_tets.h).
     double faceNodeAdvantage = 1.5;
+    /// Node snapping (section 4.5): move cut nodes onto the sweep.
+    bool snap = false;
+    /// A snap may not push a tet's radius ratio below min(floor, its ratio before).
+    double snapQualityFloor = 0.05;
     /// Smallest fraction of an edge a split may cut off (see select_cut_nodes.h).
     double minEdgeFraction = 1e-6;
 };

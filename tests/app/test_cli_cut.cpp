@@ -153,7 +153,8 @@ private slots:
         QTest::newRow("d not a number") << QStringList{"--d", "x"} << ok << "--d";
         QTest::newRow("unknown method") << QStringList{"--method", "laser"} << ok << "--method";
         QTest::newRow("unknown triangulation") << QStringList{"--triangulation", "fancy"} << ok << "--triangulation";
-        QTest::newRow("snapping not available") << QStringList{"--snap"} << ok << "--snap";
+        QTest::newRow("snap and no-snap") << QStringList{"--snap", "--no-snap"} << ok << "--snap";
+        QTest::newRow("relaxation not available") << QStringList{"--relax-steps", "10"} << ok << "--relax-steps";
         QTest::newRow("surface not available") << QStringList{"--surface", "x.obj"} << ok << "--surface";
     }
     void badInput() {

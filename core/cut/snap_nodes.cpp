@@ -1,0 +1,118 @@
+#include "core/cut/snap_nodes.h"
+
+#include "core/mesh/predicates.h"
+#include "core/mesh/quality.h"
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace resect {
+
+Vec3 tetCoordinates(const Vec3& x, const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
+    Eigen::Matrix3d m;
+    m << p1 - p0, p2 - p0, p3 - p0;
+    return m.fullPivLu().solve(x - p0);
+}
+
+std::vector<int> boundaryNodesAmong(const TetMesh& mesh, const std::vector<int>& nodes) {
+    std::vector<int> result, scratch;
+    for (int n : nodes) {
+        bool boundary = false;
+        for (int t : mesh.nodeTets(n)) {
+            const Tet& q = mesh.tet(t);
+            for (const auto& lf : kTetFaces) {
+                const int a = q[lf[0]], b = q[lf[1]], c = q[lf[2]];
+                if (a != n && b != n && c != n)
+                    continue;
+                mesh.faceTets(a, b, c, scratch);
+                if (scratch.size() == 1)
+                    boundary = true;
+            }
+            if (boundary)
+                break;
+        }
+        if (boundary)
+            result.push_back(n);
+    }
+    return result;
+}
+
+SnapResult snapNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChanges& changes,
+                     const std::vector<int>& onSurface, const SnapOptions& options) {
+    SnapResult result;
+    const std::unordered_set<int> fixed(onSurface.begin(), onSurface.end());
+    std::unordered_map<int, std::vector<int>> copies;
+    for (int n : changes.cutNodes)
+        copies[n].push_back(n);
+    for (const auto& [orig, copy] : changes.duplicatedNodes)
+        if (copies.count(orig))
+            copies[orig].push_back(copy);
+
+    for (int n : changes.cutNodes) {
+        const std::vector<int>& group = copies[n];
+        const SweepSurface::Closest target = sweep.closestPoint(mesh.pos(n));
+        if (fixed.count(n)) {
+            ++result.refused;
+            result.maxDistanceAfter = std::max(result.maxDistanceAfter, target.distance);
+            continue;
+        }
+        const Vec3 newPos = target.point;
+        // Reference position from the barycentric coordinates of the new position in the
+        // incident tet that contains it best (largest smallest coordinate).
+        double bestMin = -std::numeric_limits<double>::infinity();
+        Vec3 newRef = mesh.ref(n);
+        for (int v : group)
+            for (int t : mesh.nodeTets(v)) {
+                const Tet& q = mesh.tet(t);
+                const Vec3 l = tetCoordinates(newPos, mesh.pos(q[0]), mesh.pos(q[1]), mesh.pos(q[2]), mesh.pos(q[3]));
+                if (!l.allFinite())
+                    continue;
+                const double smallest = std::min({1.0 - l.sum(), l[0], l[1], l[2]});
+                if (smallest > bestMin) {
+                    bestMin = smallest;
+                    newRef = mesh.ref(q[0]) + l[0] * (mesh.ref(q[1]) - mesh.ref(q[0])) +
+                             l[1] * (mesh.ref(q[2]) - mesh.ref(q[0])) + l[2] * (mesh.ref(q[3]) - mesh.ref(q[0]));
+                }
+            }
+        // Check every tet around every copy with the node moved.
+        bool ok = std::isfinite(bestMin) && newRef.allFinite();
+        for (int v : group) {
+            for (int t : mesh.nodeTets(v)) {
+                if (!ok)
+                    break;
+                Tet q = mesh.tet(t);
+                Vec3 r[4], p[4];
+                for (int i = 0; i < 4; ++i) {
+                    r[i] = q[i] == v ? newRef : mesh.ref(q[i]);
+                    p[i] = q[i] == v ? newPos : mesh.pos(q[i]);
+                }
+                if (orient3d(r[0], r[1], r[2], r[3]) <= 0 || orient3d(p[0], p[1], p[2], p[3]) <= 0) {
+                    ok = false;
+                    break;
+                }
+                const double before = tetQuality(mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3])).radiusRatio;
+                const double after = tetQuality(r[0], r[1], r[2], r[3]).radiusRatio;
+                if (after < std::min(options.qualityFloor, before))
+                    ok = false;
+            }
+        }
+        if (!ok) {
+            ++result.refused;
+            result.maxDistanceAfter = std::max(result.maxDistanceAfter, target.distance);
+            continue;
+        }
+        for (int v : group) {
+            mesh.referencePositions()[v] = newRef;
+            mesh.positions()[v] = newPos;
+        }
+        ++result.snapped;
+    }
+    return result;
+}
+
+} // namespace resect

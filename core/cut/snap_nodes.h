@@ -1,0 +1,38 @@
+#pragma once
+// Step 6 of the cut (section 4.5): node snapping. Each cut node is projected orthogonally
+// onto the sweep in the deformed configuration; its new reference position comes from its
+// barycentric coordinates in an incident tet (the paper's ref. [16]). All copies of a
+// separated cut node move together, so they stay coincident. A snap that would make any
+// incident tet inverted or flat (exact predicates, both configurations) or worse than the
+// quality floor is refused and counted.
+
+#include "core/cut/cut_types.h"
+#include "core/sweep/sweep_surface.h"
+
+namespace resect {
+
+struct SnapOptions {
+    /// A snap may not push an incident tet's radius ratio below min(floor, its ratio before).
+    double qualityFloor = 0.05;
+};
+
+struct SnapResult {
+    int snapped = 0;
+    int refused = 0;
+    double maxDistanceAfter = 0;  ///< largest remaining cut-node distance (refused ones)
+};
+
+/// `changes` gives the cut nodes and their copies (duplicatedNodes). Cut nodes listed in
+/// `onSurface` (on the mesh boundary before the cut: the original surface or an earlier cut)
+/// are not moved, so the body's shape and total volume are kept; they count as refused.
+SnapResult snapNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChanges& changes,
+                     const std::vector<int>& onSurface, const SnapOptions& options);
+
+/// The nodes of `nodes` that lie on the mesh boundary (have an incident face in one tet).
+std::vector<int> boundaryNodesAmong(const TetMesh& mesh, const std::vector<int>& nodes);
+
+/// (l1, l2, l3) with x = p0 + l1 (p1 - p0) + l2 (p2 - p0) + l3 (p3 - p0); the fourth
+/// barycentric coordinate is 1 - l1 - l2 - l3. Non-finite for a flat tet.
+Vec3 tetCoordinates(const Vec3& x, const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3);
+
+} // namespace resect
