@@ -185,6 +185,15 @@ private slots:
                           "f 2 3 4\nf 1 4 3\nf 1 2 4\nf 1 3 2\n"
                           "f 2 5 6\nf 1 6 5\nf 1 2 6\nf 1 5 2\n")
             << "non-manifold";
+        // Two closed cubes, the second pushed halfway into the first.
+        QByteArray twoCubes = kCubeVertices + kCubeFacesNoTop + kCubeTop;
+        twoCubes += "v 0.5 0.5 0.5\nv 1.5 0.5 0.5\nv 1.5 1.5 0.5\nv 0.5 1.5 0.5\n"
+                    "v 0.5 0.5 1.5\nv 1.5 0.5 1.5\nv 1.5 1.5 1.5\nv 0.5 1.5 1.5\n";
+        for (const char* f : {"f 9 11 10\n", "f 9 12 11\n", "f 9 10 14\n", "f 9 14 13\n", "f 10 11 15\n",
+                              "f 10 15 14\n", "f 11 12 16\n", "f 11 16 15\n", "f 12 9 13\n", "f 12 13 16\n",
+                              "f 13 14 15\n", "f 13 15 16\n"})
+            twoCubes += f;
+        QTest::newRow("self-intersecting") << "selfintersecting.obj" << twoCubes << "self-intersect";
     }
     void badSurfaces() {
         QFETCH(QString, file);

@@ -6,6 +6,8 @@
 
 #include "core/mesh/box_mesh.h"
 #include "core/mesh/quality.h"
+#include "core/mesher/samples.h"
+#include "core/mesher/tetrahedralize.h"
 
 #include <QTest>
 
@@ -125,6 +127,55 @@ private slots:
                 QVERIFY2(pieces >= 2, qPrintable(QString("seed %1: %2 pieces").arg(seed).arg(pieces)));
             QVERIFY(result.stats.crossedEdges > 0);
             QVERIFY(summarizeQuality(mesh).minRadiusRatio > 0);
+        }
+    }
+
+    void randomSweepsOnTheSamples_data() {
+        QTest::addColumn<int>("sample");
+        QTest::addColumn<double>("scale");
+        for (int sample : {0, 1})
+            for (double scale : {1e-3, 1.0, 1e3})
+                QTest::addRow("%s, %g", sample ? "myoma" : "polyp", scale) << sample << scale;
+    }
+    void randomSweepsOnTheSamples() {
+        // The meshed anatomy (CGAL), scaled, cut by random planar, curved and multi-pose
+        // sweeps through its middle with every method.
+        QFETCH(int, sample);
+        QFETCH(double, scale);
+        TriangleSurface surface = sampleSurface(sample ? Sample::Myoma : Sample::Polyp, 0.25);
+        for (Vec3& p : surface.positions)
+            p *= scale;
+        TetMesh base;
+        QVERIFY(tetrahedralize(surface, MeshingOptions{}, base).ok());
+        const auto [lo, hi] = boundingBox(base.positions());
+        const double size = (hi - lo).maxCoeff();
+        for (unsigned seed = 1; seed <= 6; ++seed) {
+            std::mt19937 rng(seed);
+            const SweepKind kind = seed % 3 == 0 ? SweepKind::MultiPoseComplete
+                                                 : (seed % 3 == 1 ? SweepKind::PlanarComplete : SweepKind::CurvedComplete);
+            // randomSweep works in the unit box: map it onto the mesh's bounding box.
+            SweepSurface unit = randomSweep(kind, 1.0, rng);
+            std::vector<std::vector<Vec3>> curves = unit.curves();
+            for (auto& c : curves)
+                for (Vec3& p : c)
+                    p = lo + p * size;
+            SweepSurface sweep;
+            QVERIFY(SweepSurface::fromCurves(curves, sweep).ok());
+            for (CutMethod method : {CutMethod::Subdivision, CutMethod::Hybrid}) {
+                TetMesh mesh = base;
+                const double volume = mesh.totalReferenceVolume();
+                HybridCutter cutter(mesh);
+                CutOptions options;
+                options.method = method;
+                options.triangulation = method == CutMethod::Hybrid ? FaceTriangulation::Enhanced : FaceTriangulation::Standard;
+                CutResult result;
+                const Status st = cutter.cut(sweep, options, result);
+                QVERIFY2(st.ok(), st.message().c_str());
+                const QString v = cutViolations(mesh, sweep, volume, result);
+                QVERIFY2(v.isEmpty(), qPrintable(QString("seed %1: %2").arg(seed).arg(v)));
+                if (result.stats.crossedEdges > 0)
+                    QVERIFY(connectedComponents(mesh).count >= 1);
+            }
         }
     }
 
