@@ -55,16 +55,23 @@ Status runCutStudy(const TetMesh& mesh, const SweepSurface& sweep, double d, con
         const char* name;
         CutMethod method;
         FaceTriangulation triangulation;
+        bool snap;
+        int relaxSteps;
     };
-    const Method methods[] = {{"traditional subdivision", CutMethod::Subdivision, FaceTriangulation::Standard},
-                              {"hybrid (standard triangul.)", CutMethod::Hybrid, FaceTriangulation::Standard},
-                              {"hybrid (enhanced triangul.)", CutMethod::Hybrid, FaceTriangulation::Enhanced}};
+    const Method methods[] = {
+        {"traditional subdivision", CutMethod::Subdivision, FaceTriangulation::Standard, false, 0},
+        {"hybrid (standard triangul.)", CutMethod::Hybrid, FaceTriangulation::Standard, false, 0},
+        {"hybrid (enhanced triangul.)", CutMethod::Hybrid, FaceTriangulation::Enhanced, false, 0},
+        {"enhanced + snapping", CutMethod::Hybrid, FaceTriangulation::Enhanced, true, 0},
+        {"enhanced + snapping + relaxation", CutMethod::Hybrid, FaceTriangulation::Enhanced, true, 10}};
     for (const Method& m : methods) {
         TetMesh copy = mesh;
         HybridCutter cutter(copy);
         CutOptions options;
         options.method = m.method;
         options.triangulation = m.triangulation;
+        options.snap = m.snap;
+        options.relaxSteps = m.relaxSteps;
         options.d = d;
         CutResult result;
         if (Status s = cutter.cut(sweep, options, result); !s.ok())
@@ -114,7 +121,12 @@ std::string formatCutStudy(const CutStudy& study) {
     row("cut nodes / cut edges", [&](const StudyColumn& c) {
         return std::to_string(c.stats.cutNodes) + " / " + std::to_string(c.stats.cutEdges);
     });
+    row("max cut-node distance", [&](const StudyColumn& c) { return fmt("%.3g", c.stats.maxCutNodeDistance); });
+    row("snapped / refused", [&](const StudyColumn& c) {
+        return std::to_string(c.stats.snappedNodes) + " / " + std::to_string(c.stats.refusedSnaps);
+    });
     row("cut time (ms)", [&](const StudyColumn& c) { return fmt("%.3f", c.stats.timeMs.total); });
+    row("  of which snap + relax (ms)", [&](const StudyColumn& c) { return fmt("%.3f", c.stats.timeMs.snap + c.stats.timeMs.relax); });
     return s;
 }
 

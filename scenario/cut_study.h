@@ -24,7 +24,9 @@ struct StudyColumn {
 struct CutStudy {
     std::string title;
     double d = 0.2;
-    std::vector<StudyColumn> columns;  ///< original, subdivision, hybrid standard, hybrid enhanced
+    /// original, subdivision, hybrid standard, hybrid enhanced, enhanced + snapping,
+    /// enhanced + snapping + relaxation (10 steps)
+    std::vector<StudyColumn> columns;
 };
 
 /// A loop electrode pulled straight through the mesh: a U-shaped curve of 16 segments in a

@@ -1,6 +1,6 @@
 // resect cut MESH --sweep S.json [--sweep S2.json ...] --out OUT.vtu [--report R.json]
 //            [--method hybrid|subdivision] [--triangulation enhanced|standard] [--d 0.2]
-//            [--snap | --no-snap]
+//            [--snap | --no-snap] [--relax-steps N] [--w-spring W] [--w-particle W]
 #include "app/cli/cli_common.h"
 
 #include "core/cut/hybrid_cutter.h"
@@ -44,9 +44,12 @@ int runCut(Args args) {
     if (snap && noSnap)
         badInput("--snap and --no-snap contradict each other");
     options.snap = snap;
-    // Relaxation (section 4.6) and the embedded surface are not part of this build yet:
-    // refuse the options rather than ignore them.
-    for (const char* opt : {"--relax-steps", "--w-spring", "--w-particle", "--surface", "--surface-out"})
+    options.relaxSteps = args.integer("--relax-steps", 0, 10000).value_or(0);
+    options.wSpring = args.number("--w-spring", 0.0, 1e6).value_or(options.wSpring);
+    options.wParticle = args.number("--w-particle", 0.0, 1e6).value_or(options.wParticle);
+    // The embedded surface is not part of this build yet: refuse the options rather than
+    // ignore them.
+    for (const char* opt : {"--surface", "--surface-out"})
         if (args.option(opt))
             badInput(std::string(opt) + ": not available yet (relaxation and the embedded surface come later)");
     const auto files = args.positionals();
@@ -80,6 +83,8 @@ int runCut(Args args) {
         total.snappedNodes += c.snappedNodes;
         total.refusedSnaps += c.refusedSnaps;
         total.timeMs.snap += c.timeMs.snap;
+        total.timeMs.relax += c.timeMs.relax;
+        total.timeMs.update += c.timeMs.update;
         total.separatedTets += c.separatedTets;
         total.maxCutNodeDistance = std::max(total.maxCutNodeDistance, c.maxCutNodeDistance);
         total.timeMs.intersect += c.timeMs.intersect;
@@ -105,8 +110,8 @@ int runCut(Args args) {
                                      {"select", total.timeMs.select},
                                      {"decompose", total.timeMs.decompose},
                                      {"snap", total.timeMs.snap},
-                                     {"relax", 0.0},
-                                     {"update", 0.0},
+                                     {"relax", total.timeMs.relax},
+                                     {"update", total.timeMs.update},
                                      {"total", total.timeMs.total}};
         QJsonObject r;
         r["method"] = QString::fromStdString(method);

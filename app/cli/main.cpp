@@ -21,6 +21,7 @@ commands:
                                     write the mesh, surface and summary to DIR
   cut MESH --sweep S.json [--sweep S2.json ...] --out OUT.vtu [--report R.json]
       [--method hybrid|subdivision] [--triangulation enhanced|standard] [--d 0.2] [--snap|--no-snap]
+      [--relax-steps N] [--w-spring W] [--w-particle W]
                                     cut along one or more sweep surfaces, one after another
   table1 [--sample polyp|myoma ...] [--d 0.2] [--out TABLE.md]
                                     the paper's Table 1 on the built-in samples

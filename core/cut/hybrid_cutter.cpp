@@ -4,7 +4,9 @@
 #include "core/cut/intersect_edges.h"
 #include "core/cut/select_cut_nodes.h"
 #include "core/cut/separate.h"
+#include "core/cut/relax_nodes.h"
 #include "core/cut/snap_nodes.h"
+#include "core/cut/update_rest_state.h"
 #include "core/mesh/quality.h"
 
 #include <algorithm>
@@ -88,9 +90,27 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
         m_mesh.truncate(nodesBefore, tetsBefore);
     };
 
-    // Cut nodes on the boundary before the cut keep their place when snapping.
-    const std::vector<int> surfaceCutNodes =
-        options.snap ? boundaryNodesAmong(m_mesh, selection.cutNodes) : std::vector<int>{};
+    // Cut nodes, and cut edges, on the boundary before the cut: they keep their place when
+    // snapping and relaxing, so the body's shape and volume are kept.
+    const bool moves = options.snap || options.relaxSteps > 0;
+    const std::vector<int> surfaceCutNodes = moves ? boundaryNodesAmong(m_mesh, selection.cutNodes) : std::vector<int>{};
+    std::vector<std::uint64_t> surfaceCutEdges;
+    if (options.relaxSteps > 0) {
+        std::vector<int> faceScratch, edgeScratch;
+        for (const EdgeCrossing& e : selection.cutEdges) {
+            m_mesh.edgeTets(e.a, e.b, edgeScratch);
+            bool boundary = false;
+            for (int t : edgeScratch)
+                for (int v : m_mesh.tet(t)) {
+                    if (v == e.a || v == e.b)
+                        continue;
+                    m_mesh.faceTets(e.a, e.b, v, faceScratch);
+                    boundary = boundary || faceScratch.size() == 1;
+                }
+            if (boundary)
+                surfaceCutEdges.push_back(edgeKey(e.a, e.b));
+        }
+    }
 
     t0 = std::chrono::steady_clock::now();
     DecomposeOptions decompose;
@@ -103,6 +123,7 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
         return Status::error("cut failed, mesh unchanged: " + s.message());
     }
     const Separation separation = separate(m_mesh, selection, decomposition, changes);
+    std::vector<int> relaxedNodes;
     stats.timeMs.decompose = msSince(t0);
     stats.decomposedTets = decomposition.decomposedTets;
     stats.steinerPoints = decomposition.steinerPoints;
@@ -128,6 +149,33 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
         stats.timeMs.snap = msSince(t0);
     }
 
+    if (options.relaxSteps > 0) {
+        t0 = std::chrono::steady_clock::now();
+        std::vector<int> fixed = surfaceCutNodes;
+        for (std::uint64_t key : surfaceCutEdges)
+            fixed.push_back(decomposition.edgePoint.at(key));
+        RelaxOptions relax;
+        relax.steps = options.relaxSteps;
+        relax.wSpring = options.wSpring;
+        relax.wParticle = options.wParticle;
+        relax.rings = options.relaxRings;
+        // The change list's cut-surface nodes are needed here; gather them early.
+        CutChanges view = changes;
+        for (int n : selection.cutNodes)
+            view.cutSurfaceNodes.push_back(n);
+        for (const auto& [key, n] : decomposition.edgePoint)
+            view.cutSurfaceNodes.push_back(n);
+        for (const auto& [orig, copy] : changes.duplicatedNodes)
+            view.cutSurfaceNodes.push_back(copy);
+        for (int n : decomposition.sweepPoints)
+            view.cutSurfaceNodes.push_back(n);
+        const RelaxResult relaxed = relaxNodes(m_mesh, sweep, view, fixed, relax);
+        stats.relaxedMoves = relaxed.acceptedMoves;
+        stats.rejectedRelaxMoves = relaxed.rejectedMoves;
+        relaxedNodes = relaxed.movedNodes;
+        stats.timeMs.relax = msSince(t0);
+    }
+
     // Change list: modified tets once, cut-surface nodes, nodes whose tets changed.
     std::sort(changes.modifiedTets.begin(), changes.modifiedTets.end());
     changes.modifiedTets.erase(std::unique(changes.modifiedTets.begin(), changes.modifiedTets.end()),
@@ -150,8 +198,25 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
         touched.insert(m_mesh.tet(t).begin(), m_mesh.tet(t).end());
     for (const auto& [orig, copy] : changes.duplicatedNodes)
         touched.insert(orig);
+    // Nodes moved by snapping or relaxation change their neighbours' rest volumes too.
+    std::vector<int> moved = relaxedNodes;
+    if (options.snap) {
+        moved.insert(moved.end(), changes.cutNodes.begin(), changes.cutNodes.end());
+        for (const auto& [orig, copy] : changes.duplicatedNodes)
+            moved.push_back(copy);
+    }
+    for (int n : moved)
+        for (int t : m_mesh.nodeTets(n)) {
+            touched.insert(m_mesh.tet(t).begin(), m_mesh.tet(t).end());
+            m_grid.insert(m_mesh, t);
+        }
     changes.touchedNodes.assign(touched.begin(), touched.end());
     std::sort(changes.touchedNodes.begin(), changes.touchedNodes.end());
+
+    // Rest state (section 4.7): masses by Eq. 3 for every node whose tets changed.
+    t0 = std::chrono::steady_clock::now();
+    updateMasses(m_mesh, changes.touchedNodes, options.density);
+    stats.timeMs.update = msSince(t0);
 
     for (int t = tetsBefore; t < m_mesh.tetCount(); ++t)
         m_grid.insert(m_mesh, t);

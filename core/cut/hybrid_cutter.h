@@ -6,6 +6,7 @@
 // with no cut nodes chosen by distance and the standard face triangulation.
 
 #include "core/cut/cut_types.h"
+#include "core/mesh/material.h"
 #include "core/mesh/tet_grid.h"
 #include "core/status.h"
 #include "core/sweep/sweep_surface.h"
@@ -28,6 +29,13 @@ struct CutOptions {
     bool snap = false;
     /// A snap may not push a tet's radius ratio below min(floor, its ratio before).
     double snapQualityFloor = 0.05;
+    /// Relaxation (section 4.6, relax_nodes.h): steps (0: off), weights, neighbourhood.
+    int relaxSteps = 0;
+    double wSpring = 1.0;
+    double wParticle = 0.2;
+    int relaxRings = 2;
+    /// Density for the masses of Eq. 3, updated for every node whose tets changed.
+    double density = Material{}.density;
     /// Smallest fraction of an edge a split may cut off (see select_cut_nodes.h).
     double minEdgeFraction = 1e-6;
 };
@@ -40,6 +48,8 @@ struct CutStats {
     int cutNodes = 0;
     int snappedNodes = 0;
     int refusedSnaps = 0;
+    int relaxedMoves = 0;
+    int rejectedRelaxMoves = 0;
     int decomposedTets = 0;
     int separatedTets = 0;
     int duplicatedNodes = 0;

@@ -112,6 +112,19 @@ private slots:
         QCOMPARE(connectedComponents(m).count, 2);
     }
 
+    void snappingAndRelaxationInTheReport() {
+        const Run r = runCli({"cut", path("box.vtu"), "--sweep", path("low.json"), "--out", path("sr.vtu"), "--report",
+                              path("sr.json"), "--snap", "--relax-steps", "10"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QFile f(path("sr.json"));
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QJsonObject rep = QJsonDocument::fromJson(f.readAll()).object();
+        const QJsonObject cut = rep["cut"].toObject();
+        QVERIFY(cut["snapped_nodes"].toInt() + cut["refused_snaps"].toInt() == cut["cut_nodes"].toInt());
+        QVERIFY(std::abs(rep["after"].toObject()["volume"].toDouble() - 4.0) < 4e-9);
+        QVERIFY(std::abs(rep["after"].toObject()["mass"].toDouble() - rep["before"].toObject()["mass"].toDouble()) < 4e-12);
+    }
+
     void severalSweepsInARow() {
         const Run r = runCli({"cut", path("box.vtu"), "--sweep", path("low.json"), "--sweep", path("high.json"),
                               "--out", path("two.vtu")});
@@ -154,7 +167,8 @@ private slots:
         QTest::newRow("unknown method") << QStringList{"--method", "laser"} << ok << "--method";
         QTest::newRow("unknown triangulation") << QStringList{"--triangulation", "fancy"} << ok << "--triangulation";
         QTest::newRow("snap and no-snap") << QStringList{"--snap", "--no-snap"} << ok << "--snap";
-        QTest::newRow("relaxation not available") << QStringList{"--relax-steps", "10"} << ok << "--relax-steps";
+        QTest::newRow("negative relaxation steps") << QStringList{"--relax-steps", "-3"} << ok << "--relax-steps";
+        QTest::newRow("weight not a number") << QStringList{"--w-spring", "heavy"} << ok << "--w-spring";
         QTest::newRow("surface not available") << QStringList{"--surface", "x.obj"} << ok << "--surface";
     }
     void badInput() {

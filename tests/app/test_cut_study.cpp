@@ -29,7 +29,7 @@ private slots:
         CutStudy study;
         const Status s = runCutStudy(mesh, loopScoopSweep(mesh, height), 0.2, options.material, study);
         QVERIFY2(s.ok(), s.message().c_str());
-        QCOMPARE(int(study.columns.size()), 4);
+        QCOMPARE(int(study.columns.size()), 6);
         const StudyColumn& original = study.columns[0];
         const StudyColumn& subdivision = study.columns[1];
         const StudyColumn& enhanced = study.columns[3];
@@ -48,6 +48,11 @@ private slots:
                                 .arg(enhanced.quality.minRadiusRatio).arg(original.quality.minRadiusRatio)));
         QVERIFY(subdivision.quality.minRadiusRatio < 0.1 * original.quality.minRadiusRatio);
         QVERIFY(enhanced.stableDt > 10 * subdivision.stableDt);
+        // Snapping and relaxation: relaxation never lowers the worst element of the snapped cut.
+        const StudyColumn& snapped = study.columns[4];
+        const StudyColumn& relaxed = study.columns[5];
+        QVERIFY(relaxed.quality.minRadiusRatio >= snapped.quality.minRadiusRatio);
+        QVERIFY(snapped.stats.snappedNodes + snapped.stats.refusedSnaps == snapped.stats.cutNodes);
     }
 };
 

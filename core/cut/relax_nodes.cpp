@@ -1,0 +1,195 @@
+#include "core/cut/relax_nodes.h"
+
+#include "core/cut/snap_nodes.h"
+#include "core/mesh/predicates.h"
+#include "core/mesh/quality.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace resect {
+namespace {
+
+double minQualityAround(const TetMesh& mesh, const std::vector<int>& group) {
+    double q = std::numeric_limits<double>::infinity();
+    for (int v : group)
+        for (int t : mesh.nodeTets(v)) {
+            const Tet& k = mesh.tet(t);
+            q = std::min(q, tetQuality(mesh.ref(k[0]), mesh.ref(k[1]), mesh.ref(k[2]), mesh.ref(k[3])).radiusRatio);
+        }
+    return q;
+}
+
+} // namespace
+
+RelaxResult relaxNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChanges& changes,
+                       const std::vector<int>& fixedNodes, const RelaxOptions& options) {
+    RelaxResult result;
+    if (options.steps <= 0)
+        return result;
+
+    // Groups of coincident copies: a node and the copies separation made of it.
+    std::unordered_map<int, int> leader;  // node -> first node of its group
+    std::unordered_map<int, std::vector<int>> groupOf;
+    for (const auto& [orig, copy] : changes.duplicatedNodes) {
+        const int l = leader.count(orig) ? leader[orig] : orig;
+        leader[orig] = l;
+        leader[copy] = l;
+        auto& g = groupOf[l];
+        if (g.empty())
+            g.push_back(l);
+        g.push_back(copy);
+    }
+    const auto lead = [&](int n) { auto it = leader.find(n); return it == leader.end() ? n : it->second; };
+    const std::unordered_set<int> onCut(changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end());
+    std::unordered_set<int> fixed;
+    for (int n : fixedNodes) {
+        fixed.insert(lead(n));
+    }
+
+    // S: the k-ring neighbourhood of the cut (by group leaders).
+    std::unordered_set<int> region;
+    std::vector<int> frontier;
+    for (int n : changes.cutSurfaceNodes)
+        if (region.insert(lead(n)).second)
+            frontier.push_back(lead(n));
+    for (int ring = 0; ring < options.rings; ++ring) {
+        std::vector<int> next;
+        for (int n : frontier) {
+            auto it = groupOf.find(n);
+            const std::vector<int> members = it == groupOf.end() ? std::vector<int>{n} : it->second;
+            for (int m : members)
+                for (int u : mesh.nodeNeighbours(m))
+                    if (region.insert(lead(u)).second)
+                        next.push_back(lead(u));
+        }
+        frontier = std::move(next);
+    }
+    std::vector<int> nodes(region.begin(), region.end());
+    std::sort(nodes.begin(), nodes.end());
+
+    const auto members = [&](int n) {
+        auto it = groupOf.find(n);
+        return it == groupOf.end() ? std::vector<int>{n} : it->second;
+    };
+    // A node on the boundary that is not on this cut lies on an earlier surface: fixed too.
+    std::vector<int> scratch;
+    const auto onBoundary = [&](int n) {
+        for (int t : mesh.nodeTets(n)) {
+            const Tet& q = mesh.tet(t);
+            for (const auto& lf : kTetFaces) {
+                const int a = q[lf[0]], b = q[lf[1]], c = q[lf[2]];
+                if (a != n && b != n && c != n)
+                    continue;
+                mesh.faceTets(a, b, c, scratch);
+                if (scratch.size() == 1)
+                    return true;
+            }
+        }
+        return false;
+    };
+    std::vector<int> movable;
+    for (int n : nodes) {
+        const bool cutNode = onCut.count(n) > 0;
+        if (fixed.count(n) || (!cutNode && onBoundary(n))) {
+            ++result.fixed;
+            continue;
+        }
+        movable.push_back(n);
+        ++(cutNode ? result.onSweep : result.movable);
+    }
+
+    for (int step = 0; step < options.steps; ++step) {
+        for (int n : movable) {
+            const std::vector<int> group = members(n);
+            // Neighbours over all copies, and their mean distance (the springs' rest length).
+            std::vector<int> neighbours;
+            for (int m : group)
+                for (int u : mesh.nodeNeighbours(m))
+                    if (lead(u) != n)
+                        neighbours.push_back(u);
+            std::sort(neighbours.begin(), neighbours.end());
+            neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+            if (neighbours.empty())
+                continue;
+            const Vec3 x = mesh.pos(n);
+            double rest = 0;
+            for (int u : neighbours)
+                rest += (mesh.pos(u) - x).norm();
+            rest /= static_cast<double>(neighbours.size());
+            if (!(rest > 0))
+                continue;
+            // Eq. 2 forces in units of the rest length: linear springs and a Lennard-Jones
+            // potential whose minimum is at the rest length (sigma = rest / 2^(1/6)).
+            Vec3 force = Vec3::Zero();
+            for (int u : neighbours) {
+                const Vec3 d = mesh.pos(u) - x;
+                const double r = d.norm() / rest;
+                if (!(r > 0))
+                    continue;
+                const Vec3 dir = d / (r * rest);
+                const double spring = r - 1.0;
+                const double s6 = 0.5 / std::pow(r, 6.0);  // (sigma / r)^6 with 2^(1/6) sigma = 1
+                const double lj = -24.0 * (2.0 * s6 * s6 - s6) / r;
+                force += (options.wSpring * spring + options.wParticle * lj / 12.0) * dir;
+            }
+            Vec3 target = x + options.stepSize * rest * force / static_cast<double>(neighbours.size());
+            if (onCut.count(n))
+                target = sweep.closestPoint(target).point;  // stay within the sweep
+            if (!target.allFinite() || target == x)
+                continue;
+            // Reference position from the tet (around any copy) containing the target best.
+            double bestMin = -std::numeric_limits<double>::infinity();
+            Vec3 targetRef = mesh.ref(n);
+            for (int m : group)
+                for (int t : mesh.nodeTets(m)) {
+                    const Tet& q = mesh.tet(t);
+                    const Vec3 l = tetCoordinates(target, mesh.pos(q[0]), mesh.pos(q[1]), mesh.pos(q[2]), mesh.pos(q[3]));
+                    if (!l.allFinite())
+                        continue;
+                    const double smallest = std::min({1.0 - l.sum(), l[0], l[1], l[2]});
+                    if (smallest > bestMin) {
+                        bestMin = smallest;
+                        targetRef = mesh.ref(q[0]) + l[0] * (mesh.ref(q[1]) - mesh.ref(q[0])) +
+                                    l[1] * (mesh.ref(q[2]) - mesh.ref(q[0])) + l[2] * (mesh.ref(q[3]) - mesh.ref(q[0]));
+                    }
+                }
+            if (!targetRef.allFinite())
+                continue;
+            const double before = minQualityAround(mesh, group);
+            const Vec3 oldRef = mesh.ref(n), oldPos = mesh.pos(n);
+            for (int m : group) {
+                mesh.referencePositions()[m] = targetRef;
+                mesh.positions()[m] = target;
+            }
+            bool ok = true;
+            for (int m : group)
+                for (int t : mesh.nodeTets(m)) {
+                    const Tet& q = mesh.tet(t);
+                    if (orient3d(mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3])) <= 0 ||
+                        orient3d(mesh.pos(q[0]), mesh.pos(q[1]), mesh.pos(q[2]), mesh.pos(q[3])) <= 0)
+                        ok = false;
+                }
+            if (ok && minQualityAround(mesh, group) < before)
+                ok = false;
+            if (!ok) {
+                for (int m : group) {
+                    mesh.referencePositions()[m] = oldRef;
+                    mesh.positions()[m] = oldPos;
+                }
+                ++result.rejectedMoves;
+            } else {
+                ++result.acceptedMoves;
+                result.movedNodes.insert(result.movedNodes.end(), group.begin(), group.end());
+            }
+        }
+    }
+    std::sort(result.movedNodes.begin(), result.movedNodes.end());
+    result.movedNodes.erase(std::unique(result.movedNodes.begin(), result.movedNodes.end()), result.movedNodes.end());
+    return result;
+}
+
+} // namespace resect
