@@ -355,8 +355,7 @@ Status Decomposer::cone(const std::vector<SideTri>& tris, std::vector<Tet>& tets
                 valid = false;
                 break;
             }
-            quality = std::min(quality, tetQuality(m_mesh.ref(t[0]), m_mesh.ref(t[2]), m_mesh.ref(t[1]),
-                                                   m_mesh.ref(v)).radiusRatio);
+            quality = std::min(quality, radiusRatio(m_mesh.ref(t[0]), m_mesh.ref(t[2]), m_mesh.ref(t[1]), m_mesh.ref(v)));
         }
         if (valid && avoidCrossing && m_options.sweep) {
             SegmentQuery query;
@@ -414,7 +413,7 @@ bool Decomposer::coneFrom(const std::vector<SideTri>& tris, const Vec3& ref, con
               orient3d(m_mesh.pos(t[0]), m_mesh.pos(t[1]), m_mesh.pos(t[2]), pos) < 0))
             return false;
         if (minRadiusRatio > 0 &&
-            tetQuality(m_mesh.ref(t[0]), m_mesh.ref(t[2]), m_mesh.ref(t[1]), ref).radiusRatio < minRadiusRatio)
+            radiusRatio(m_mesh.ref(t[0]), m_mesh.ref(t[2]), m_mesh.ref(t[1]), ref) < minRadiusRatio)
             return false;
     }
     if (node < 0) {

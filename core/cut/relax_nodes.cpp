@@ -18,7 +18,7 @@ double minQualityAround(const TetMesh& mesh, const std::vector<int>& group) {
     for (int v : group)
         for (int t : mesh.nodeTets(v)) {
             const Tet& k = mesh.tet(t);
-            q = std::min(q, tetQuality(mesh.ref(k[0]), mesh.ref(k[1]), mesh.ref(k[2]), mesh.ref(k[3])).radiusRatio);
+            q = std::min(q, radiusRatio(mesh.ref(k[0]), mesh.ref(k[1]), mesh.ref(k[2]), mesh.ref(k[3])));
         }
     return q;
 }

@@ -95,8 +95,8 @@ SnapResult snapNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChanges&
                     ok = false;
                     break;
                 }
-                const double before = tetQuality(mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3])).radiusRatio;
-                const double after = tetQuality(r[0], r[1], r[2], r[3]).radiusRatio;
+                const double before = radiusRatio(mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3]));
+                const double after = radiusRatio(r[0], r[1], r[2], r[3]);
                 if (after < std::min(options.qualityFloor, before))
                     ok = false;
             }

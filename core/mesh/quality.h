@@ -25,6 +25,10 @@ struct TetQuality {
 /// size 1e-6 and 1e6 give the same ratios as at size 1.
 TetQuality tetQuality(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3);
 
+/// Only the radius ratio 3 r_in / R_circ (signed; same value as tetQuality's), without the
+/// dihedral angles: for inner loops that compare shapes.
+double radiusRatio(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3);
+
 /// Measures of every tet of the mesh (reference configuration).
 std::vector<TetQuality> tetQualities(const TetMesh& mesh);
 

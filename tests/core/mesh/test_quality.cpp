@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 
 using namespace resect;
 
@@ -75,6 +76,18 @@ private slots:
         QVERIFY(std::abs(q.radiusRatio) > 0);
         QVERIFY2(std::abs(q.radiusRatio) < maxRatio, qPrintable(QString::number(q.radiusRatio)));
         QVERIFY(q.maxDihedral * kDeg > 179.0 || q.minDihedral * kDeg < 1.0);
+    }
+
+    void radiusRatioAloneMatchesTetQuality() {
+        std::mt19937 rng(4);
+        std::uniform_real_distribution<double> u(-1, 1);
+        for (int k = 0; k < 500; ++k) {
+            const Vec3 p[4] = {Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), u(rng), u(rng)),
+                               Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), u(rng), u(rng))};
+            const double full = tetQuality(p[0], p[1], p[2], p[3]).radiusRatio;
+            QVERIFY(std::abs(radiusRatio(p[0], p[1], p[2], p[3]) - full) <= 1e-12 * std::max(1.0, std::abs(full)));
+        }
+        QCOMPARE(radiusRatio(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)), 0.0);
     }
 
     void degenerateAndInverted() {
