@@ -43,8 +43,11 @@ int runCut(Args args) {
     const bool snap = args.flag("--snap"), noSnap = args.flag("--no-snap");
     if (snap && noSnap)
         badInput("--snap and --no-snap contradict each other");
-    options.snap = snap;
-    options.relaxSteps = args.integer("--relax-steps", 0, 10000).value_or(0);
+    // The full pipeline of section 4.1 by default for the hybrid method: snapping and ten
+    // relaxation steps; the subdivision baseline stays plain.
+    const bool hybrid = options.method == CutMethod::Hybrid;
+    options.snap = hybrid ? !noSnap : snap;
+    options.relaxSteps = args.integer("--relax-steps", 0, 10000).value_or(hybrid ? 10 : 0);
     options.wSpring = args.number("--w-spring", 0.0, 1e6).value_or(options.wSpring);
     options.wParticle = args.number("--w-particle", 0.0, 1e6).value_or(options.wParticle);
     // The embedded surface is not part of this build yet: refuse the options rather than

@@ -22,7 +22,8 @@ commands:
   cut MESH --sweep S.json [--sweep S2.json ...] --out OUT.vtu [--report R.json]
       [--method hybrid|subdivision] [--triangulation enhanced|standard] [--d 0.2] [--snap|--no-snap]
       [--relax-steps N] [--w-spring W] [--w-particle W]
-                                    cut along one or more sweep surfaces, one after another
+                                    cut along one or more sweep surfaces, one after another;
+                                    hybrid snaps and relaxes (10 steps) unless told not to
   table1 [--sample polyp|myoma ...] [--d 0.2] [--out TABLE.md]
                                     the paper's Table 1 on the built-in samples
   bench cut-scaling [--sizes 10000,100000,1000000] [--repeats 7] [--out scaling.csv]

@@ -38,6 +38,9 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
     if (!std::isfinite(options.d) || options.d < 0 || options.d > 0.5)
         return Status::error("d must be in [0, 0.5] (a fraction of the mean edge length), got " +
                              std::to_string(options.d));
+    if (options.relaxSteps < 0 || options.relaxRings < 1 || options.relaxRings > 5 || !(options.relaxDamping > 0) ||
+        !(options.wSpring >= 0) || !(options.wParticle >= 0))
+        return Status::error("relaxation needs steps >= 0, rings in [1, 5], damping > 0 and weights >= 0");
     if (!(options.faceNodeAdvantage >= 0) || options.faceNodeAdvantage > 100)
         return Status::error("faceNodeAdvantage must be in [0, 100]");
     if (!(options.minEdgeFraction > 0) || options.minEdgeFraction > 0.01)
@@ -159,6 +162,7 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
         relax.wSpring = options.wSpring;
         relax.wParticle = options.wParticle;
         relax.rings = options.relaxRings;
+        relax.damping = options.relaxDamping;
         // The change list's cut-surface nodes are needed here; gather them early.
         CutChanges view = changes;
         for (int n : selection.cutNodes)

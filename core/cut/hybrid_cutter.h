@@ -34,6 +34,7 @@ struct CutOptions {
     double wSpring = 1.0;
     double wParticle = 0.2;
     int relaxRings = 2;
+    double relaxDamping = 10.0;
     /// Density for the masses of Eq. 3, updated for every node whose tets changed.
     double density = Material{}.density;
     /// Smallest fraction of an edge a split may cut off (see select_cut_nodes.h).

@@ -28,7 +28,7 @@ double minQualityAround(const TetMesh& mesh, const std::vector<int>& group) {
 RelaxResult relaxNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChanges& changes,
                        const std::vector<int>& fixedNodes, const RelaxOptions& options) {
     RelaxResult result;
-    if (options.steps <= 0)
+    if (options.steps <= 0 || !(options.damping > 0))
         return result;
 
     // Groups of coincident copies: a node and the copies separation made of it.
@@ -102,6 +102,20 @@ RelaxResult relaxNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChange
         ++(cutNode ? result.onSweep : result.movable);
     }
 
+    // Rest length of all springs: the mean length of the edges at movable nodes.
+    double rest = 0;
+    int edgeCount = 0;
+    for (int n : movable)
+        for (int m : members(n))
+            for (int u : mesh.nodeNeighbours(m)) {
+                rest += (mesh.pos(u) - mesh.pos(m)).norm();
+                ++edgeCount;
+            }
+    if (edgeCount == 0 || !(rest > 0))
+        return result;
+    rest /= edgeCount;
+    const double stepSize = 1.0 / options.damping;
+
     for (int step = 0; step < options.steps; ++step) {
         for (int n : movable) {
             const std::vector<int> group = members(n);
@@ -116,12 +130,6 @@ RelaxResult relaxNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChange
             if (neighbours.empty())
                 continue;
             const Vec3 x = mesh.pos(n);
-            double rest = 0;
-            for (int u : neighbours)
-                rest += (mesh.pos(u) - x).norm();
-            rest /= static_cast<double>(neighbours.size());
-            if (!(rest > 0))
-                continue;
             // Eq. 2 forces in units of the rest length: linear springs and a Lennard-Jones
             // potential whose minimum is at the rest length (sigma = rest / 2^(1/6)).
             Vec3 force = Vec3::Zero();
@@ -136,7 +144,7 @@ RelaxResult relaxNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChange
                 const double lj = -24.0 * (2.0 * s6 * s6 - s6) / r;
                 force += (options.wSpring * spring + options.wParticle * lj / 12.0) * dir;
             }
-            Vec3 target = x + options.stepSize * rest * force / static_cast<double>(neighbours.size());
+            Vec3 target = x + stepSize * rest * force / static_cast<double>(neighbours.size());
             if (onCut.count(n))
                 target = sweep.closestPoint(target).point;  // stay within the sweep
             if (!target.allFinite() || target == x)

@@ -7,8 +7,9 @@
 // (the original surface or earlier cuts) are fixed. Forces follow Eq. 2: springs on the edges
 // at movable nodes with rest length equal to the mean of those edges, plus Lennard-Jones
 // forces between neighbours (equilibrium at the same length), weighted by w_spring and
-// w_particle, equal masses. With heavy damping the motion is first order,
-// x <- x + h F / c, which is what is integrated here (explicitly, one node after another).
+// w_particle, equal masses. The rest length is the mean length of all edges at movable nodes
+// of S. With heavy damping the motion is first order, x <- x + h F / c, which is what is
+// integrated here (explicitly, one node after another).
 // A move is kept only if no tet around the node inverts (exact, both configurations) and the
 // smallest radius ratio around the node does not drop, so relaxation never lowers the
 // mesh's minimum radius ratio. New reference positions come from barycentric coordinates in
@@ -25,7 +26,9 @@ struct RelaxOptions {
     int steps = 10;            ///< relaxation sweeps over S
     double wSpring = 1.0;      ///< weight of the spring forces (Eq. 2)
     double wParticle = 0.2;    ///< weight of the Lennard-Jones forces (Eq. 2)
-    double stepSize = 0.1;     ///< h / c: fraction of the local rest length per unit force
+    /// Damping c of Eq. 2 (unit masses, unit time step): heavily damped motion moves a node by
+    /// F / c per step, in units of the rest length.
+    double damping = 10.0;
     int rings = 2;             ///< size of the neighbourhood S
 };
 
