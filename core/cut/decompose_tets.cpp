@@ -1,5 +1,6 @@
 #include "core/cut/decompose_tets.h"
 
+#include "core/cut/snap_nodes.h"
 #include "core/mesh/predicates.h"
 #include "core/mesh/quality.h"
 #include "core/sweep/intersect_segment.h"
@@ -30,13 +31,6 @@ struct SideTri {
     int plane;
 };
 constexpr int kCutPlane = 4;
-
-/// Coordinates (l1, l2, l3) of x in the frame p0 + l1 (p1-p0) + l2 (p2-p0) + l3 (p3-p0).
-Vec3 barycentric(const Vec3& x, const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
-    Eigen::Matrix3d m;
-    m << p1 - p0, p2 - p0, p3 - p0;
-    return m.fullPivLu().solve(x - p0);
-}
 
 int localEdge(int x, int y) {
     for (int e = 0; e < 6; ++e)
@@ -490,13 +484,9 @@ Status Decomposer::decompose(const TetCut& tc) {
                 if (done || points.size() < 2)
                     break;
                 const Vec3 onSweep = m_options.sweep ? m_options.sweep->closestPoint(guess).point : guess;
-                const Vec3 b = barycentric(onSweep, m_mesh.pos(parent[0]), m_mesh.pos(parent[1]),
-                                           m_mesh.pos(parent[2]), m_mesh.pos(parent[3]));
-                if (!b.allFinite())
+                const Vec3 ref = referenceInTet(m_mesh, parent, onSweep);
+                if (!ref.allFinite())
                     continue;
-                const Vec3 ref = m_mesh.ref(parent[0]) + b[0] * (m_mesh.ref(parent[1]) - m_mesh.ref(parent[0])) +
-                                 b[1] * (m_mesh.ref(parent[2]) - m_mesh.ref(parent[0])) +
-                                 b[2] * (m_mesh.ref(parent[3]) - m_mesh.ref(parent[0]));
                 const int before = m_mesh.nodeCount();
                 if (coneFrom(tris, ref, onSweep, -1, tets, floor)) {
                     done = true;

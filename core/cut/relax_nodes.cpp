@@ -149,22 +149,7 @@ RelaxResult relaxNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChange
                 target = sweep.closestPoint(target).point;  // stay within the sweep
             if (!target.allFinite() || target == x)
                 continue;
-            // Reference position from the tet (around any copy) containing the target best.
-            double bestMin = -std::numeric_limits<double>::infinity();
-            Vec3 targetRef = mesh.ref(n);
-            for (int m : group)
-                for (int t : mesh.nodeTets(m)) {
-                    const Tet& q = mesh.tet(t);
-                    const Vec3 l = tetCoordinates(target, mesh.pos(q[0]), mesh.pos(q[1]), mesh.pos(q[2]), mesh.pos(q[3]));
-                    if (!l.allFinite())
-                        continue;
-                    const double smallest = std::min({1.0 - l.sum(), l[0], l[1], l[2]});
-                    if (smallest > bestMin) {
-                        bestMin = smallest;
-                        targetRef = mesh.ref(q[0]) + l[0] * (mesh.ref(q[1]) - mesh.ref(q[0])) +
-                                    l[1] * (mesh.ref(q[2]) - mesh.ref(q[0])) + l[2] * (mesh.ref(q[3]) - mesh.ref(q[0]));
-                    }
-                }
+            const Vec3 targetRef = referenceFromDeformed(mesh, group, target);
             if (!targetRef.allFinite())
                 continue;
             const double before = minQualityAround(mesh, group);

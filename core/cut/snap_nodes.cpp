@@ -19,6 +19,31 @@ Vec3 tetCoordinates(const Vec3& x, const Vec3& p0, const Vec3& p1, const Vec3& p
     return m.fullPivLu().solve(x - p0);
 }
 
+Vec3 referenceInTet(const TetMesh& mesh, const Tet& q, const Vec3& pos) {
+    const Vec3 l = tetCoordinates(pos, mesh.pos(q[0]), mesh.pos(q[1]), mesh.pos(q[2]), mesh.pos(q[3]));
+    return mesh.ref(q[0]) + l[0] * (mesh.ref(q[1]) - mesh.ref(q[0])) + l[1] * (mesh.ref(q[2]) - mesh.ref(q[0])) +
+           l[2] * (mesh.ref(q[3]) - mesh.ref(q[0]));
+}
+
+Vec3 referenceFromDeformed(const TetMesh& mesh, const std::vector<int>& group, const Vec3& pos) {
+    double bestMin = -std::numeric_limits<double>::infinity();
+    Vec3 ref = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+    for (int v : group)
+        for (int t : mesh.nodeTets(v)) {
+            const Tet& q = mesh.tet(t);
+            const Vec3 l = tetCoordinates(pos, mesh.pos(q[0]), mesh.pos(q[1]), mesh.pos(q[2]), mesh.pos(q[3]));
+            if (!l.allFinite())
+                continue;
+            const double smallest = std::min({1.0 - l.sum(), l[0], l[1], l[2]});
+            if (smallest > bestMin) {
+                bestMin = smallest;
+                ref = mesh.ref(q[0]) + l[0] * (mesh.ref(q[1]) - mesh.ref(q[0])) + l[1] * (mesh.ref(q[2]) - mesh.ref(q[0])) +
+                      l[2] * (mesh.ref(q[3]) - mesh.ref(q[0]));
+            }
+        }
+    return ref;
+}
+
 std::vector<int> boundaryNodesAmong(const TetMesh& mesh, const std::vector<int>& nodes) {
     std::vector<int> result, scratch;
     for (int n : nodes) {
@@ -62,25 +87,9 @@ SnapResult snapNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChanges&
             continue;
         }
         const Vec3 newPos = target.point;
-        // Reference position from the barycentric coordinates of the new position in the
-        // incident tet that contains it best (largest smallest coordinate).
-        double bestMin = -std::numeric_limits<double>::infinity();
-        Vec3 newRef = mesh.ref(n);
-        for (int v : group)
-            for (int t : mesh.nodeTets(v)) {
-                const Tet& q = mesh.tet(t);
-                const Vec3 l = tetCoordinates(newPos, mesh.pos(q[0]), mesh.pos(q[1]), mesh.pos(q[2]), mesh.pos(q[3]));
-                if (!l.allFinite())
-                    continue;
-                const double smallest = std::min({1.0 - l.sum(), l[0], l[1], l[2]});
-                if (smallest > bestMin) {
-                    bestMin = smallest;
-                    newRef = mesh.ref(q[0]) + l[0] * (mesh.ref(q[1]) - mesh.ref(q[0])) +
-                             l[1] * (mesh.ref(q[2]) - mesh.ref(q[0])) + l[2] * (mesh.ref(q[3]) - mesh.ref(q[0]));
-                }
-            }
+        const Vec3 newRef = referenceFromDeformed(mesh, group, newPos);
         // Check every tet around every copy with the node moved.
-        bool ok = std::isfinite(bestMin) && newRef.allFinite();
+        bool ok = newRef.allFinite();
         for (int v : group) {
             for (int t : mesh.nodeTets(v)) {
                 if (!ok)

@@ -31,6 +31,15 @@ SnapResult snapNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChanges&
 /// The nodes of `nodes` that lie on the mesh boundary (have an incident face in one tet).
 std::vector<int> boundaryNodesAmong(const TetMesh& mesh, const std::vector<int>& nodes);
 
+/// Reference position for a node of `group` (coincident copies) moved to `pos` in the deformed
+/// configuration: barycentric coordinates of `pos` in the incident tet that contains it best
+/// (largest smallest coordinate), applied to that tet's reference positions (the paper's
+/// ref. [16]). Non-finite if every incident tet is flat.
+Vec3 referenceFromDeformed(const TetMesh& mesh, const std::vector<int>& group, const Vec3& pos);
+
+/// The same mapping for a point in one tet.
+Vec3 referenceInTet(const TetMesh& mesh, const Tet& tet, const Vec3& pos);
+
 /// (l1, l2, l3) with x = p0 + l1 (p1 - p0) + l2 (p2 - p0) + l3 (p3 - p0); the fourth
 /// barycentric coordinate is 1 - l1 - l2 - l3. Non-finite for a flat tet.
 Vec3 tetCoordinates(const Vec3& x, const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3);

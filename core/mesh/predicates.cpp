@@ -24,6 +24,16 @@ bool trianglesIntersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3&
     return CGAL::do_intersect(t1, t2);
 }
 
+bool inClosedTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 n = ((b - a).cross(c - a)).cwiseAbs();
+    const int drop = n.x() >= n.y() ? (n.x() >= n.z() ? 0 : 2) : (n.y() >= n.z() ? 1 : 2);
+    const int s = orient2dProjected(a, b, c, drop);
+    if (s == 0)
+        return false;
+    return orient2dProjected(a, b, p, drop) != -s && orient2dProjected(b, c, p, drop) != -s &&
+           orient2dProjected(c, a, p, drop) != -s;
+}
+
 int orient2dProjected(const Vec3& a, const Vec3& b, const Vec3& c, int drop) {
     const int i = drop == 0 ? 1 : 0;
     const int j = drop == 2 ? 1 : 2;

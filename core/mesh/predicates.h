@@ -19,6 +19,10 @@ bool collinear(const Vec3& a, const Vec3& b, const Vec3& c);
 bool trianglesIntersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
                         const Vec3& f);
 
+/// For p coplanar with the non-degenerate triangle (a, b, c) (orient3d == 0): true if p lies
+/// in the closed triangle. Exact (projects along the normal's dominant axis).
+bool inClosedTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
 /// Sign of the 2-D orientation of (a, b, c) after dropping coordinate `drop` (0, 1 or 2).
 int orient2dProjected(const Vec3& a, const Vec3& b, const Vec3& c, int drop);
 

@@ -16,23 +16,6 @@ bool finite(const Vec3& p) { return std::isfinite(p.x()) && std::isfinite(p.y())
 
 std::string tetName(int t) { return "tet " + std::to_string(t); }
 
-/// Dominant axis of a normal, dropped when projecting a face to 2-D.
-int dominantAxis(const Vec3& n) {
-    const Vec3 a = n.cwiseAbs();
-    return a.x() >= a.y() ? (a.x() >= a.z() ? 0 : 2) : (a.y() >= a.z() ? 1 : 2);
-}
-
-/// True if p lies in the closed triangle (a, b, c) (coplanarity already established; the
-/// projection drops the normal's dominant axis, so the projected triangle is not flat).
-bool inClosedTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-    const int drop = dominantAxis((b - a).cross(c - a));
-    const int s = orient2dProjected(a, b, c, drop);
-    if (s == 0)
-        return false;
-    return orient2dProjected(a, b, p, drop) != -s && orient2dProjected(b, c, p, drop) != -s &&
-           orient2dProjected(c, a, p, drop) != -s;
-}
-
 } // namespace
 
 const char* toString(MeshProblem::Kind kind) {

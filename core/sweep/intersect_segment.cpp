@@ -8,21 +8,6 @@
 namespace resect {
 namespace {
 
-int dominantAxis(const Vec3& n) {
-    const Vec3 a = n.cwiseAbs();
-    return a.x() >= a.y() ? (a.x() >= a.z() ? 0 : 2) : (a.y() >= a.z() ? 1 : 2);
-}
-
-/// p (coplanar with the triangle) lies in the closed triangle.
-bool inClosedTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-    const int drop = dominantAxis((b - a).cross(c - a));
-    const int s = orient2dProjected(a, b, c, drop);
-    if (s == 0)
-        return false;
-    return orient2dProjected(a, b, p, drop) != -s && orient2dProjected(b, c, p, drop) != -s &&
-           orient2dProjected(c, a, p, drop) != -s;
-}
-
 // Feature keys: interior of triangle t, edge (a, b) with a < b, vertex v. Tagged in the
 // low two bits so that the three kinds never collide.
 std::int64_t interiorKey(int t) { return (static_cast<std::int64_t>(t) << 2) | 0; }

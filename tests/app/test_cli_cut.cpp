@@ -6,6 +6,8 @@
 #include "core/mesh/validity.h"
 #include "scenario/mesh_io.h"
 
+#include "cli_runner.h"
+
 #include <QCryptographicHash>
 #include <QFile>
 #include <QJsonArray>
@@ -16,37 +18,16 @@
 #include <QTest>
 
 using namespace resect;
+using resect::testing::Run;
+using resect::testing::runCli;
+using resect::testing::sha256;
 
 namespace {
-
-struct Run {
-    int code = -1;
-    QString out, err;
-};
-
-Run runCli(const QStringList& args) {
-    QProcess p;
-    p.start(RESECT_CLI, args);
-    Run r;
-    if (!p.waitForFinished(300000)) {
-        p.kill();
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
-}
 
 void write(const QString& path, const QByteArray& text) {
     QFile f(path);
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(text);
-}
-
-QByteArray sha(const QString& path) {
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? QCryptographicHash::hash(f.readAll(), QCryptographicHash::Sha256) : QByteArray();
 }
 
 /// A nearly horizontal planar sweep from z = h to z = h + 0.1 across the 2 x 2 x 1 box
@@ -75,11 +56,11 @@ private slots:
     }
 
     void reportHasTheContractKeys() {
-        const QByteArray before = sha(path("box.vtu"));
+        const QByteArray before = sha256(path("box.vtu"));
         const Run r = runCli({"cut", path("box.vtu"), "--sweep", path("low.json"), "--out", path("cut.vtu"),
                               "--report", path("report.json")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
-        QCOMPARE(sha(path("box.vtu")), before);  // input untouched
+        QCOMPARE(sha256(path("box.vtu")), before);  // input untouched
         QFile f(path("report.json"));
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QJsonObject rep = QJsonDocument::fromJson(f.readAll()).object();
@@ -189,10 +170,10 @@ private slots:
     }
 
     void refusesToOverwriteItsInput() {
-        const QByteArray before = sha(path("box.vtu"));
+        const QByteArray before = sha256(path("box.vtu"));
         const Run r = runCli({"cut", path("box.vtu"), "--sweep", path("low.json"), "--out", path("box.vtu")});
         QCOMPARE(r.code, 2);
-        QCOMPARE(sha(path("box.vtu")), before);
+        QCOMPARE(sha256(path("box.vtu")), before);
     }
 };
 

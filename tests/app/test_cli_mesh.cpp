@@ -4,6 +4,8 @@
 #include "core/mesh/masses.h"
 #include "scenario/mesh_io.h"
 
+#include "cli_runner.h"
+
 #include <QCryptographicHash>
 #include <QDir>
 #include <QFile>
@@ -15,41 +17,16 @@
 #include <QTest>
 
 using namespace resect;
+using resect::testing::Run;
+using resect::testing::runCli;
+using resect::testing::sha256;
 
 namespace {
-
-struct Run {
-    int code = -1;
-    QString out;
-    QString err;
-};
-
-Run runCli(const QStringList& args, int timeoutMs = 600000) {
-    QProcess p;
-    p.start(RESECT_CLI, args);
-    Run r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        r.err = "timed out";
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;  // -2: crashed
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
-}
 
 void writeText(const QString& path, const QByteArray& text) {
     QFile f(path);
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(text);
-}
-
-QByteArray sha(const QString& path) {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return {};
-    return QCryptographicHash::hash(f.readAll(), QCryptographicHash::Sha256);
 }
 
 // A closed unit cube as OBJ (12 triangles, outward).
@@ -104,7 +81,7 @@ private slots:
         TetMesh m = makeBoxTetMesh(Vec3::Zero(), Vec3(2, 2, 2), 2, 2, 2);
         computeLumpedMasses(m, 1e-3);
         QVERIFY(writeVtu(path("box.vtu").toStdString(), m).ok());
-        const QByteArray before = sha(path("box.vtu"));
+        const QByteArray before = sha256(path("box.vtu"));
         const Run r = runCli({"info", path("box.vtu")});
         QCOMPARE(r.code, 0);
         const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
@@ -117,7 +94,7 @@ private slots:
         QVERIFY(o["stable_dt"].toDouble() > 0);
         QVERIFY(std::abs(o["volume_ratio"].toDouble() - 1.0) < 1e-9);
         QVERIFY(o["validity"].toObject()["valid"].toBool());
-        QCOMPARE(sha(path("box.vtu")), before);
+        QCOMPARE(sha256(path("box.vtu")), before);
     }
 
     void infoReportsProblems() {
@@ -155,17 +132,17 @@ private slots:
 
     void meshSurfaceFileKeepsInputIntact() {
         writeText(path("cube.obj"), kCubeVertices + kCubeFacesNoTop + kCubeTop);
-        const QByteArray before = sha(path("cube.obj"));
+        const QByteArray before = sha256(path("cube.obj"));
         const Run r = runCli({"mesh", path("cube.obj"), "--out", path("cube.vtu"), "--edge-length", "0.25"});
         QVERIFY2(r.code == 0, qPrintable(r.err));
-        QCOMPARE(sha(path("cube.obj")), before);
+        QCOMPARE(sha256(path("cube.obj")), before);
         TetMesh m;
         QVERIFY(readTetMesh(path("cube.vtu").toStdString(), m).ok());
         QVERIFY(std::abs(m.totalReferenceVolume() - 1.0) < 0.03);
         // Refuses to overwrite its input.
         const Run same = runCli({"mesh", path("cube.obj"), "--out", path("cube.obj")});
         QCOMPARE(same.code, 2);
-        QCOMPARE(sha(path("cube.obj")), before);
+        QCOMPARE(sha256(path("cube.obj")), before);
     }
 
     void badSurfaces_data() {
@@ -200,7 +177,7 @@ private slots:
         QFETCH(QByteArray, content);
         QFETCH(QString, message);
         writeText(path(file), content);
-        const QByteArray before = sha(path(file));
+        const QByteArray before = sha256(path(file));
         const QString out = path("never.vtu");
         const Run r = runCli({"mesh", path(file), "--out", out});
         QCOMPARE(r.code, 2);
@@ -208,7 +185,7 @@ private slots:
                  qPrintable(r.err));
         QCOMPARE(r.err.trimmed().count('\n'), 0);
         QVERIFY(!QFile::exists(out));
-        QCOMPARE(sha(path(file)), before);
+        QCOMPARE(sha256(path(file)), before);
         // No temporary file left behind.
         for (const QString& name : QDir(m_dir.path()).entryList(QDir::Files | QDir::Hidden))
             QVERIFY2(!name.contains("tmp"), qPrintable(name));

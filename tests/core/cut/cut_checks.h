@@ -8,9 +8,28 @@
 #include <QString>
 #include <QStringList>
 
+#include "core/mesh/box_mesh.h"
+
+#include <random>
 #include <unordered_set>
 
 namespace resect::testing {
+
+/// A cube of side `scale` split into cells^3 Kuhn cubes, its interior nodes moved at random
+/// by up to `jitter` times the cube size (reproducible from `seed`).
+inline TetMesh jitteredBox(double scale, unsigned seed, double jitter, int cells = 6) {
+    TetMesh m = makeBoxTetMesh(Vec3::Zero(), Vec3(1, 1, 1) * scale, cells, cells, cells);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-jitter * scale, jitter * scale);
+    for (int n = 0; n < m.nodeCount(); ++n) {
+        const Vec3 p = m.ref(n);
+        if ((p.array() > 1e-9 * scale).all() && (p.array() < scale * (1 - 1e-9)).all()) {
+            m.referencePositions()[n] += Vec3(u(rng), u(rng), u(rng));
+            m.positions()[n] = m.ref(n);
+        }
+    }
+    return m;
+}
 
 /// Empty if the mesh after a cut is valid: volume conserved to `volumeTolerance` relative,
 /// no validity problem (inverted or flat tets, over-shared faces, T-junctions, unused or

@@ -15,25 +15,12 @@
 
 using namespace resect;
 using resect::testing::cutViolations;
+using resect::testing::jitteredBox;
 
 namespace {
 
 enum class SweepKind { PlanarComplete, PlanarPartial, CurvedComplete, MultiPoseComplete, CurvedPartial };
 
-TetMesh jitteredBox(double scale, unsigned seed) {
-    TetMesh m = makeBoxTetMesh(Vec3::Zero(), Vec3(1, 1, 1) * scale, 6, 6, 6);
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-0.2 / 6 * scale, 0.2 / 6 * scale);
-    for (int n = 0; n < m.nodeCount(); ++n) {
-        const Vec3 p = m.ref(n);
-        const double eps = 1e-9 * scale;
-        if ((p.array() > eps).all() && (p.array() < scale - eps).all()) {
-            m.referencePositions()[n] += Vec3(u(rng), u(rng), u(rng));
-            m.positions()[n] = m.ref(n);
-        }
-    }
-    return m;
-}
 
 /// A random sweep through the unit box scaled by `scale`: a height field over the (s, r)
 /// plane of a random frame, so it never intersects itself.
@@ -106,7 +93,7 @@ private slots:
         QFETCH(double, advantage);
         const bool partial = kind == SweepKind::PlanarPartial || kind == SweepKind::CurvedPartial;
         for (unsigned seed = 1; seed <= 8; ++seed) {
-            TetMesh mesh = jitteredBox(scale, seed);
+            TetMesh mesh = jitteredBox(scale, seed, 0.2 / 6);
             std::mt19937 rng(seed * 7919u + static_cast<unsigned>(kind));
             const SweepSurface sweep = randomSweep(kind, scale, rng);
             const double volume = mesh.totalReferenceVolume();
@@ -182,7 +169,7 @@ private slots:
     void repeatedIntersectingCuts() {
         // Ten scoops through the same region, one after another, with every method.
         for (CutMethod method : {CutMethod::Hybrid, CutMethod::Subdivision}) {
-            TetMesh mesh = jitteredBox(1.0, 99);
+            TetMesh mesh = jitteredBox(1.0, 99, 0.2 / 6);
             const double volume = mesh.totalReferenceVolume();
             HybridCutter cutter(mesh);
             std::mt19937 rng(12345);
@@ -202,7 +189,7 @@ private slots:
     }
 
     void changeListDescribesTheEdit() {
-        TetMesh mesh = jitteredBox(1.0, 5);
+        TetMesh mesh = jitteredBox(1.0, 5, 0.2 / 6);
         const int nodes = mesh.nodeCount(), tets = mesh.tetCount();
         const std::vector<Tet> before = mesh.tets();
         HybridCutter cutter(mesh);

@@ -19,17 +19,8 @@ using resect::testing::cutViolations;
 
 namespace {
 
-TetMesh jitteredBox(double scale, unsigned seed) {
-    TetMesh m = makeBoxTetMesh(Vec3::Zero(), Vec3(1, 1, 1) * scale, 6, 6, 6);
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-0.04 * scale, 0.04 * scale);
-    for (int n = 0; n < m.nodeCount(); ++n) {
-        const Vec3 p = m.ref(n);
-        if ((p.array() > 1e-9 * scale).all() && (p.array() < scale * (1 - 1e-9)).all()) {
-            m.referencePositions()[n] += Vec3(u(rng), u(rng), u(rng));
-            m.positions()[n] = m.ref(n);
-        }
-    }
+TetMesh jitteredBoxWithMasses(double scale, unsigned seed) {
+    TetMesh m = resect::testing::jitteredBox(scale, seed, 0.04);
     computeLumpedMasses(m, Material{}.density);
     return m;
 }
@@ -86,7 +77,7 @@ private slots:
         QFETCH(double, scale);
         QFETCH(unsigned, seed);
         QFETCH(bool, snap);
-        const TetMesh input = jitteredBox(scale, seed);
+        const TetMesh input = jitteredBoxWithMasses(scale, seed);
         std::vector<char> wasBoundary(input.nodeCount());
         for (int n = 0; n < input.nodeCount(); ++n)
             wasBoundary[n] = onBoundary(input, n);
@@ -131,7 +122,7 @@ private slots:
     }
     void massesFollowEq3AfterManyCuts() {
         QFETCH(double, scale);
-        TetMesh mesh = jitteredBox(scale, 11);
+        TetMesh mesh = jitteredBoxWithMasses(scale, 11);
         double total = 0;
         for (double m : mesh.masses())
             total += m;

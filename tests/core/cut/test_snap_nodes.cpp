@@ -12,22 +12,10 @@
 
 using namespace resect;
 using resect::testing::cutViolations;
+using resect::testing::jitteredBox;
 
 namespace {
 
-TetMesh jitteredBox(double scale, unsigned seed) {
-    TetMesh m = makeBoxTetMesh(Vec3::Zero(), Vec3(1, 1, 1) * scale, 6, 6, 6);
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-0.03 * scale, 0.03 * scale);
-    for (int n = 0; n < m.nodeCount(); ++n) {
-        const Vec3 p = m.ref(n);
-        if ((p.array() > 1e-9 * scale).all() && (p.array() < scale * (1 - 1e-9)).all()) {
-            m.referencePositions()[n] += Vec3(u(rng), u(rng), u(rng));
-            m.positions()[n] = m.ref(n);
-        }
-    }
-    return m;
-}
 
 SweepSurface plane(const Vec3& c, const Vec3& normal, double R) {
     const Vec3 n = normal.normalized(), u = n.unitOrthogonal(), w = n.cross(u);
@@ -54,7 +42,7 @@ private slots:
     void planarCutLeavesNoCrossingEdge() {
         QFETCH(double, scale);
         QFETCH(unsigned, seed);
-        TetMesh mesh = jitteredBox(scale, seed);
+        TetMesh mesh = jitteredBox(scale, seed, 0.03);
         std::mt19937 rng(seed);
         std::uniform_real_distribution<double> sym(-1, 1);
         const SweepSurface sweep = plane(Vec3(0.5, 0.5, 0.5) * scale + 0.1 * scale * Vec3(sym(rng), sym(rng), sym(rng)),
@@ -116,7 +104,7 @@ private slots:
     }
 
     void spoilingSnapsAreRefusedAndCounted() {
-        TetMesh mesh = jitteredBox(1.0, 9);
+        TetMesh mesh = jitteredBox(1.0, 9, 0.03);
         const SweepSurface sweep = plane(Vec3(0.5, 0.5, 0.52), Vec3(0.1, 0.2, 1), 2);
         HybridCutter cutter(mesh);
         CutOptions options;

@@ -1,0 +1,38 @@
+#pragma once
+// Running the real `resect` binary from tests: exit code (-2 if it crashed), stdout, stderr.
+#include <QCryptographicHash>
+#include <QFile>
+#include <QProcess>
+#include <QString>
+#include <QStringList>
+
+namespace resect::testing {
+
+struct Run {
+    int code = -1;
+    QString out;
+    QString err;
+};
+
+inline Run runCli(const QStringList& args, int timeoutMs = 600000) {
+    QProcess p;
+    p.start(RESECT_CLI, args);
+    Run r;
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        r.err = "timed out";
+        return r;
+    }
+    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+/// SHA-256 of a file's bytes (empty if unreadable): to check that inputs stay untouched.
+inline QByteArray sha256(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? QCryptographicHash::hash(f.readAll(), QCryptographicHash::Sha256) : QByteArray();
+}
+
+} // namespace resect::testing
