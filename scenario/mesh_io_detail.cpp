@@ -1,5 +1,8 @@
 #include "scenario/mesh_io_detail.h"
 
+#include <exception>
+#include <new>
+
 #include "core/mesh/masses.h"
 #include "core/mesh/material.h"
 #include "core/mesh/predicates.h"
@@ -14,6 +17,18 @@
 #include <system_error>
 
 namespace resect::detail {
+
+Status guarded(const std::string& path, const char* action, const std::function<Status()>& body) {
+    try {
+        return body();
+    } catch (const std::bad_alloc&) {
+        return Status::error(path + ": out of memory while " + action);
+    } catch (const std::exception& e) {
+        return Status::error(path + ": " + e.what());
+    } catch (...) {
+        return Status::error(path + ": unknown error while " + action);
+    }
+}
 
 namespace fs = std::filesystem;
 

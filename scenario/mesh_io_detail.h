@@ -18,6 +18,10 @@ namespace resect::detail {
 /// "PATH: not a regular file".
 Status checkRegularFile(const std::string& path);
 
+/// Runs `body` and turns any exception into an error naming the file (`action`: "reading"
+/// or "writing"), so that no exception leaves the readers and writers.
+Status guarded(const std::string& path, const char* action, const std::function<Status()>& body);
+
 /// Reads the whole file into `out` (bytes as they are). Errors name the file.
 Status readWholeFile(const std::string& path, std::string& out);
 

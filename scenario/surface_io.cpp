@@ -395,27 +395,11 @@ Status writeSurfaceImpl(const std::string& path, const TriangleSurface& surface)
 } // namespace
 
 Status readSurface(const std::string& path, TriangleSurface& out) {
-    try {
-        return readSurfaceImpl(path, out);
-    } catch (const std::bad_alloc&) {
-        return Status::error(path + ": out of memory while reading");
-    } catch (const std::exception& e) {
-        return Status::error(path + ": " + e.what());
-    } catch (...) {
-        return Status::error(path + ": unknown error while reading");
-    }
+    return detail::guarded(path, "reading", [&] { return readSurfaceImpl(path, out); });
 }
 
 Status writeSurface(const std::string& path, const TriangleSurface& surface) {
-    try {
-        return writeSurfaceImpl(path, surface);
-    } catch (const std::bad_alloc&) {
-        return Status::error(path + ": out of memory while writing");
-    } catch (const std::exception& e) {
-        return Status::error(path + ": " + e.what());
-    } catch (...) {
-        return Status::error(path + ": unknown error while writing");
-    }
+    return detail::guarded(path, "writing", [&] { return writeSurfaceImpl(path, surface); });
 }
 
 } // namespace resect

@@ -232,27 +232,11 @@ Status writeVtuImpl(const std::string& path, const TetMesh& mesh) {
 } // namespace
 
 Status readVtu(const std::string& path, TetMesh& out) {
-    try {
-        return readVtuImpl(path, out);
-    } catch (const std::bad_alloc&) {
-        return Status::error(path + ": out of memory while reading");
-    } catch (const std::exception& e) {
-        return Status::error(path + ": " + e.what());
-    } catch (...) {
-        return Status::error(path + ": unknown error while reading");
-    }
+    return detail::guarded(path, "reading", [&] { return readVtuImpl(path, out); });
 }
 
 Status writeVtu(const std::string& path, const TetMesh& mesh) {
-    try {
-        return writeVtuImpl(path, mesh);
-    } catch (const std::bad_alloc&) {
-        return Status::error(path + ": out of memory while writing");
-    } catch (const std::exception& e) {
-        return Status::error(path + ": " + e.what());
-    } catch (...) {
-        return Status::error(path + ": unknown error while writing");
-    }
+    return detail::guarded(path, "writing", [&] { return writeVtuImpl(path, mesh); });
 }
 
 } // namespace resect
