@@ -77,6 +77,9 @@ struct CutChanges {
     /// Every node on the sweep: cut nodes and split points (both copies), and the interior
     /// points placed on the sweep in partially cut tets.
     std::vector<int> cutSurfaceNodes;
+    /// Side of the cut of every tet the cut decomposed or re-attached (+1 / -1; 0 for pieces
+    /// of partially cut tets, which lie on both sides), for re-binding the embedded surface.
+    std::unordered_map<int, std::int8_t> tetSide;
     /// All nodes whose incident tets changed (masses and stiffnesses need updating).
     std::vector<int> touchedNodes;
 };

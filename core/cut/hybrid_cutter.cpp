@@ -128,6 +128,7 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
     const Separation separation = separate(m_mesh, selection, decomposition, changes);
     std::vector<int> relaxedNodes;
     stats.timeMs.decompose = msSince(t0);
+    changes.tetSide = decomposition.tetSide;
     stats.decomposedTets = decomposition.decomposedTets;
     stats.steinerPoints = decomposition.steinerPoints;
     stats.faceNodes = decomposition.faceNodes;

@@ -1,0 +1,211 @@
+#include "core/embed/binding.h"
+
+#include "core/cut/snap_nodes.h"
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace resect {
+
+std::array<double, 4> barycentricInTet(const TetMesh& mesh, int tet, const Vec3& p) {
+    // Closed form: w_i = volume of the tet with corner i replaced by p / volume of the tet.
+    const Tet& q = mesh.tet(tet);
+    const Vec3 &a = mesh.pos(q[0]), &b = mesh.pos(q[1]), &c = mesh.pos(q[2]), &d = mesh.pos(q[3]);
+    const Vec3 ab = b - a, ac = c - a, ad = d - a, ap = p - a;
+    const double v = ab.dot(ac.cross(ad));
+    const double w1 = ap.dot(ac.cross(ad)) / v;
+    const double w2 = ab.dot(ap.cross(ad)) / v;
+    const double w3 = ab.dot(ac.cross(ap)) / v;
+    return {1.0 - w1 - w2 - w3, w1, w2, w3};
+}
+
+namespace {
+double smallest(const std::array<double, 4>& w) { return std::min({w[0], w[1], w[2], w[3]}); }
+} // namespace
+
+void SurfaceBinding::bindVertex(const TetMesh& mesh, int v, const Vec3& p, const std::vector<int>& candidates) {
+    // The containing tet has all weights >= 0; otherwise the one "least outside".
+    double best = -std::numeric_limits<double>::infinity();
+    for (int t : candidates) {
+        if (t >= mesh.tetCount())
+            continue;
+        const auto w = barycentricInTet(mesh, t, p);
+        const double s = smallest(w);
+        if (std::isfinite(s) && s > best) {
+            best = s;
+            m_tet[v] = t;
+            m_weights[v] = w;
+        }
+    }
+}
+
+Status SurfaceBinding::bind(const TetMesh& mesh, const TriangleSurface& surface) {
+    if (mesh.empty())
+        return Status::error("cannot bind a surface to an empty tet mesh");
+    for (const Vec3& p : surface.positions)
+        if (!p.allFinite())
+            return Status::error("surface has a non-finite vertex");
+    const int n = surface.vertexCount();
+    m_tet.assign(n, -1);
+    m_weights.assign(n, {1, 0, 0, 0});
+    m_outside = 0;
+    TetGrid grid;
+    grid.build(mesh);
+    std::vector<int> candidates;
+    const double cell = grid.cellSize();
+    constexpr double kTolerance = 1e-9;
+    for (int v = 0; v < n; ++v) {
+        const Vec3& p = surface.positions[v];
+        // Grow the search box until a containing tet (or, far out, any tet) is found.
+        for (double r = 0.0; r <= 64 * cell; r = r == 0 ? cell : 2 * r) {
+            Eigen::AlignedBox3d box(p - Vec3::Constant(r), p + Vec3::Constant(r));
+            grid.query(box, candidates);
+            bindVertex(mesh, v, p, candidates);
+            if (m_tet[v] >= 0 && smallest(m_weights[v]) >= -kTolerance)
+                break;
+            if (m_tet[v] >= 0 && r >= 2 * cell)
+                break;  // outside the mesh: the nearest tet found is kept
+        }
+        if (m_tet[v] < 0) {
+            std::vector<int> all(mesh.tetCount());
+            std::iota(all.begin(), all.end(), 0);
+            bindVertex(mesh, v, p, all);
+        }
+        if (smallest(m_weights[v]) < -kTolerance)
+            ++m_outside;
+    }
+    m_verticesOfTet.assign(mesh.tetCount(), {});
+    for (int v = 0; v < n; ++v)
+        m_verticesOfTet[m_tet[v]].push_back(v);
+    sortByTet();
+    return Status::success();
+}
+
+void SurfaceBinding::sortByTet() {
+    m_order.resize(m_tet.size());
+    std::iota(m_order.begin(), m_order.end(), 0);
+    std::stable_sort(m_order.begin(), m_order.end(), [&](int a, int b) { return m_tet[a] < m_tet[b]; });
+}
+
+void SurfaceBinding::apply(const TetMesh& mesh, std::vector<Vec3>& out) const {
+    out.resize(m_tet.size());
+    for (int v : m_order) {
+        const Tet& q = mesh.tet(m_tet[v]);
+        const auto& w = m_weights[v];
+        out[v] = w[0] * mesh.pos(q[0]) + w[1] * mesh.pos(q[1]) + w[2] * mesh.pos(q[2]) + w[3] * mesh.pos(q[3]);
+    }
+}
+
+void SurfaceBinding::rebind(const TetMesh& mesh, const CutChanges& changes, const std::vector<Vec3>& positions,
+                            const SweepSurface& sweep) {
+    // Pieces of every changed tet: itself (its slot now holds a piece) and its appended pieces.
+    std::unordered_map<int, std::vector<int>> pieces;
+    for (int t : changes.modifiedTets)
+        pieces[t].push_back(t);
+    for (std::size_t k = 0; k < changes.parentOfNewTet.size(); ++k)
+        pieces[changes.parentOfNewTet[k]].push_back(changes.firstNewTet + static_cast<int>(k));
+    // Tets around moved nodes only need new coordinates.
+    // Tets around moved nodes need new coordinates, and tets around the cut surface may now
+    // lie on the other side of the sweep from vertices bound to them.
+    // (Two rings: where cut nodes stay off the sweep, the mesh's cut deviates from the sweep
+    // by up to d, and a vertex next to the sweep may sit in a tet a ring away, across it.)
+    std::unordered_map<int, char> recompute;
+    std::vector<int> ring = changes.touchedNodes;
+    ring.insert(ring.end(), changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end());
+    for (int n : changes.cutSurfaceNodes)
+        for (int u : mesh.nodeNeighbours(n))
+            ring.push_back(u);
+    std::sort(ring.begin(), ring.end());
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    for (int node : ring)
+        for (int t : mesh.nodeTets(node))
+            if (t < static_cast<int>(m_verticesOfTet.size()))
+                recompute.emplace(t, 1);
+
+    if (static_cast<int>(m_verticesOfTet.size()) < mesh.tetCount())
+        m_verticesOfTet.resize(mesh.tetCount());
+    std::vector<int> affected;
+    for (const auto& [t, list] : pieces)
+        for (int v : m_verticesOfTet[t])
+            affected.push_back(v);
+    for (const auto& [t, flag] : recompute)
+        if (!pieces.count(t))
+            for (int v : m_verticesOfTet[t])
+                affected.push_back(v);
+    std::sort(affected.begin(), affected.end());
+    affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
+
+    // Side of a tet: from the cut where it made the tet; else from its nodes off the cut
+    // surface (a tet touching the cut at nodes that stayed off the sweep may have its centre
+    // across it); else from its centre.
+    const std::unordered_set<int> onCut(changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end());
+    const auto sideOfTet = [&](int t) {
+        auto it = changes.tetSide.find(t);
+        if (it != changes.tetSide.end())
+            return static_cast<int>(it->second);
+        Vec3 centre = Vec3::Zero();
+        for (int node : mesh.tet(t)) {
+            if (!onCut.count(node)) {
+                const int s = sweep.sideOf(mesh.pos(node));
+                if (s != 0)
+                    return s;
+            }
+            centre += mesh.pos(node) / 4.0;
+        }
+        return sweep.sideOf(centre);
+    };
+    for (int v : affected) {
+        const int old = m_tet[v];
+        auto it = pieces.find(old);
+        std::vector<int> candidates = it == pieces.end() ? std::vector<int>{old} : it->second;
+        // Keep the tets on the vertex's side of the sweep; if none (a vertex just outside the
+        // coarse mesh, nearest to a tet across the cut), look one ring further.
+        const int side = sweep.sideOf(positions[v]);
+        const auto sameSide = [&](const std::vector<int>& tets) {
+            std::vector<int> kept;
+            for (int t : tets)
+                if (side == 0 || sideOfTet(t) == 0 || sideOfTet(t) == side)
+                    kept.push_back(t);
+            return kept;
+        };
+        std::vector<int> kept = sameSide(candidates);
+        if (kept.empty()) {
+            std::vector<int> ring;
+            for (int t : candidates)
+                for (int node : mesh.tet(t))
+                    ring.insert(ring.end(), mesh.nodeTets(node).begin(), mesh.nodeTets(node).end());
+            for (const auto& [orig, copy] : changes.duplicatedNodes)
+                for (int t : candidates)
+                    for (int node : mesh.tet(t))
+                        if (node == orig)
+                            ring.insert(ring.end(), mesh.nodeTets(copy).begin(), mesh.nodeTets(copy).end());
+            std::sort(ring.begin(), ring.end());
+            ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+            kept = sameSide(ring);
+        }
+        if (!kept.empty())
+            candidates = kept;
+        m_tet[v] = -1;
+        bindVertex(mesh, v, positions[v], candidates);
+        if (m_tet[v] < 0) {
+            m_tet[v] = old;
+            m_weights[v] = barycentricInTet(mesh, old, positions[v]);
+        }
+    }
+    // Rebuild the per-tet lists for what changed, and the streaming order.
+    for (const auto& [t, list] : pieces)
+        for (int piece : list)
+            m_verticesOfTet[piece].clear();
+    for (const auto& [t, flag] : recompute)
+        m_verticesOfTet[t].clear();
+    for (int v : affected)
+        m_verticesOfTet[m_tet[v]].push_back(v);
+}
+
+} // namespace resect

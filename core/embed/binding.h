@@ -1,0 +1,58 @@
+#pragma once
+// The embedded high-resolution surface (section 5): every surface vertex is bound to the tet
+// that contains it (or the nearest one, for vertices just outside the coarse mesh) with
+// barycentric coordinates; applying the binding after the tets move places every vertex.
+// A mapper in the sense of STYLE.md: bind() once, apply() every frame, rebind() only what a
+// cut touched.
+
+#include "core/cut/cut_types.h"
+#include "core/mesh/tet_grid.h"
+#include "core/mesh/triangle_surface.h"
+#include "core/status.h"
+#include "core/sweep/sweep_surface.h"
+
+#include <vector>
+
+namespace resect {
+
+class SurfaceBinding {
+public:
+    /// Binds every vertex of `surface` (positions in the mesh's current configuration) to a
+    /// tet, found through a spatial grid (not a scan of all tets). Fails only for an empty
+    /// mesh or non-finite positions.
+    Status bind(const TetMesh& mesh, const TriangleSurface& surface);
+
+    /// Positions of every vertex from the tets' current positions (out: #V positions).
+    /// Streams through memory: vertices are processed in tet order.
+    void apply(const TetMesh& mesh, std::vector<Vec3>& out) const;
+
+    /// After a cut: vertices bound to a tet that was decomposed get the piece that contains
+    /// them (pieces lie on one side of the cut each, so a vertex off the sweep lands on its own
+    /// side); vertices whose tet was only re-attached or had nodes moved get new coordinates.
+    /// `positions` are the vertices' current positions (as apply() gave them before the cut).
+    /// Costs in proportion to the affected vertices; the streaming order is refreshed by bind().
+    /// The vertex and its new tet are on the same side of the sweep (section 5.1).
+    void rebind(const TetMesh& mesh, const CutChanges& changes, const std::vector<Vec3>& positions,
+                const SweepSurface& sweep);
+
+    int vertexCount() const { return static_cast<int>(m_tet.size()); }
+    int tetOf(int vertex) const { return m_tet[vertex]; }
+    const std::array<double, 4>& weightsOf(int vertex) const { return m_weights[vertex]; }
+    /// Vertices bound to a tet they lie outside of (just outside the coarse mesh): count.
+    int outsideCount() const { return m_outside; }
+
+private:
+    void bindVertex(const TetMesh& mesh, int v, const Vec3& p, const std::vector<int>& candidates);
+    void sortByTet();
+
+    std::vector<int> m_tet;                         ///< #V bound tet
+    std::vector<std::array<double, 4>> m_weights;   ///< #V barycentric weights
+    std::vector<int> m_order;                       ///< vertices sorted by their tet
+    std::vector<std::vector<int>> m_verticesOfTet;  ///< #tets vertex lists (for rebinding)
+    int m_outside = 0;
+};
+
+/// Barycentric coordinates (w0..w3, summing to 1) of p in the tet (current positions).
+std::array<double, 4> barycentricInTet(const TetMesh& mesh, int tet, const Vec3& p);
+
+} // namespace resect
