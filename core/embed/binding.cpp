@@ -102,6 +102,74 @@ void SurfaceBinding::apply(const TetMesh& mesh, std::vector<Vec3>& out) const {
     }
 }
 
+namespace {
+
+/// Side of a tet relative to the sweep: from the cut where it made the tet; else from its
+/// nodes off the cut surface (a tet touching the cut at nodes that stayed off the sweep may
+/// have its centre across it); else from its centre.
+int tetSideOf(const TetMesh& mesh, const CutChanges& changes, const std::unordered_set<int>& onCut,
+              const SweepSurface& sweep, int t) {
+    auto it = changes.tetSide.find(t);
+    if (it != changes.tetSide.end())
+        return it->second;
+    Vec3 centre = Vec3::Zero();
+    for (int node : mesh.tet(t)) {
+        if (!onCut.count(node)) {
+            const int s = sweep.sideOf(mesh.pos(node));
+            if (s != 0)
+                return s;
+        }
+        centre += mesh.pos(node) / 4.0;
+    }
+    return sweep.sideOf(centre);
+}
+
+/// Tets sharing a node with any of `tets`, including the stars of separated copies.
+std::vector<int> ringOf(const TetMesh& mesh, const CutChanges& changes, const std::vector<int>& tets) {
+    std::vector<int> ring;
+    std::unordered_set<int> nodes;
+    for (int t : tets)
+        for (int node : mesh.tet(t))
+            nodes.insert(node);
+    for (const auto& [orig, copy] : changes.duplicatedNodes)
+        if (nodes.count(orig) || nodes.count(copy)) {
+            nodes.insert(orig);
+            nodes.insert(copy);
+        }
+    for (int node : nodes)
+        ring.insert(ring.end(), mesh.nodeTets(node).begin(), mesh.nodeTets(node).end());
+    std::sort(ring.begin(), ring.end());
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    return ring;
+}
+
+} // namespace
+
+void SurfaceBinding::bindNewVertices(const TetMesh& mesh, const std::vector<Vec3>& positions, int first,
+                                     const std::vector<std::array<int, 2>>& sourceEdges, const std::vector<int>& sides,
+                                     const CutChanges& changes, const SweepSurface& sweep) {
+    const std::unordered_set<int> onCut(changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end());
+    const int total = static_cast<int>(positions.size());
+    m_tet.resize(total, -1);
+    m_weights.resize(total, {1, 0, 0, 0});
+    if (static_cast<int>(m_verticesOfTet.size()) < mesh.tetCount())
+        m_verticesOfTet.resize(mesh.tetCount());
+    for (int v = first; v < total; ++v) {
+        const auto& edge = sourceEdges[v - first];
+        std::vector<int> near = ringOf(mesh, changes, {m_tet[edge[0]], m_tet[edge[1]]});
+        const int side = sides[v - first];
+        std::vector<int> kept;
+        for (int t : near)
+            if (side == 0 || tetSideOf(mesh, changes, onCut, sweep, t) == side)
+                kept.push_back(t);
+        bindVertex(mesh, v, positions[v], kept.empty() ? near : kept);
+        m_verticesOfTet[m_tet[v]].push_back(v);
+    }
+    m_order.resize(total);
+    for (int v = first; v < total; ++v)
+        m_order[v] = v;
+}
+
 void SurfaceBinding::rebind(const TetMesh& mesh, const CutChanges& changes, const std::vector<Vec3>& positions,
                             const SweepSurface& sweep) {
     // Pieces of every changed tet: itself (its slot now holds a piece) and its appended pieces.
@@ -141,25 +209,8 @@ void SurfaceBinding::rebind(const TetMesh& mesh, const CutChanges& changes, cons
     std::sort(affected.begin(), affected.end());
     affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
 
-    // Side of a tet: from the cut where it made the tet; else from its nodes off the cut
-    // surface (a tet touching the cut at nodes that stayed off the sweep may have its centre
-    // across it); else from its centre.
     const std::unordered_set<int> onCut(changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end());
-    const auto sideOfTet = [&](int t) {
-        auto it = changes.tetSide.find(t);
-        if (it != changes.tetSide.end())
-            return static_cast<int>(it->second);
-        Vec3 centre = Vec3::Zero();
-        for (int node : mesh.tet(t)) {
-            if (!onCut.count(node)) {
-                const int s = sweep.sideOf(mesh.pos(node));
-                if (s != 0)
-                    return s;
-            }
-            centre += mesh.pos(node) / 4.0;
-        }
-        return sweep.sideOf(centre);
-    };
+    const auto sideOfTet = [&](int t) { return tetSideOf(mesh, changes, onCut, sweep, t); };
     for (int v : affected) {
         const int old = m_tet[v];
         auto it = pieces.find(old);
@@ -175,20 +226,8 @@ void SurfaceBinding::rebind(const TetMesh& mesh, const CutChanges& changes, cons
             return kept;
         };
         std::vector<int> kept = sameSide(candidates);
-        if (kept.empty()) {
-            std::vector<int> ring;
-            for (int t : candidates)
-                for (int node : mesh.tet(t))
-                    ring.insert(ring.end(), mesh.nodeTets(node).begin(), mesh.nodeTets(node).end());
-            for (const auto& [orig, copy] : changes.duplicatedNodes)
-                for (int t : candidates)
-                    for (int node : mesh.tet(t))
-                        if (node == orig)
-                            ring.insert(ring.end(), mesh.nodeTets(copy).begin(), mesh.nodeTets(copy).end());
-            std::sort(ring.begin(), ring.end());
-            ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-            kept = sameSide(ring);
-        }
+        if (kept.empty())
+            kept = sameSide(ringOf(mesh, changes, candidates));
         if (!kept.empty())
             candidates = kept;
         m_tet[v] = -1;

@@ -35,6 +35,13 @@ public:
     void rebind(const TetMesh& mesh, const CutChanges& changes, const std::vector<Vec3>& positions,
                 const SweepSurface& sweep);
 
+    /// Binds vertices added by a surface cut (from `first` on): each to the tet containing it
+    /// best among the tets near the ones its source edge's ends are bound to, on its own side
+    /// of the sweep (`sides`: +1 / -1, 0 for either). Costs in proportion to the new vertices.
+    void bindNewVertices(const TetMesh& mesh, const std::vector<Vec3>& positions, int first,
+                         const std::vector<std::array<int, 2>>& sourceEdges, const std::vector<int>& sides,
+                         const CutChanges& changes, const SweepSurface& sweep);
+
     int vertexCount() const { return static_cast<int>(m_tet.size()); }
     int tetOf(int vertex) const { return m_tet[vertex]; }
     const std::array<double, 4>& weightsOf(int vertex) const { return m_weights[vertex]; }

@@ -88,8 +88,10 @@ Status cutSurface(TriangleSurface& surface, std::vector<Vec3>* rest, const Sweep
     TriangleSurface result = surface;
     std::vector<Vec3> restResult = rest ? *rest : std::vector<Vec3>{};
     const bool hasUv = surface.uvs.size() == surface.positions.size();
-    const auto addVertex = [&](const Crossing& c) {
+    const auto addVertex = [&](const Crossing& c, int side) {
         const double t = c.hit.t;
+        out.sourceEdge.push_back({c.low, c.high});
+        out.side.push_back(side);
         result.positions.push_back(c.hit.point);
         if (hasUv)
             result.uvs.push_back((1 - t) * surface.uvs[c.low] + t * surface.uvs[c.high]);
@@ -105,12 +107,12 @@ Status cutSurface(TriangleSurface& surface, std::vector<Vec3>* rest, const Sweep
             if (!c || c->plus >= 0)
                 continue;
             ++out.splitEdges;
-            c->plus = addVertex(*c);
+            c->plus = addVertex(*c, c->shared ? 0 : 1);
             if (c->shared) {
                 c->minus = c->plus;
                 ++out.faceVertices;
             } else {
-                c->minus = addVertex(*c);
+                c->minus = addVertex(*c, -1);
             }
         }
     // Side of an original vertex relative to the crossing on one of its edges.

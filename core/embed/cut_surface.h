@@ -31,6 +31,8 @@ struct SurfaceCut {
     int capTriangles = 0;    ///< new triangles closing the cut, both sides together
     int firstNewVertex = 0;  ///< vertices from here on were created by the cut
     std::vector<Vec2> sweepUv;  ///< (u, v) on the sweep of every new vertex
+    std::vector<std::array<int, 2>> sourceEdge;  ///< surface edge each new vertex was split from
+    std::vector<int> side;      ///< side of the sweep of each new vertex (+1, -1; 0 if shared)
 };
 
 /// Cuts a closed, manifold, outward-oriented surface along the sweep. `rest` (optional) holds

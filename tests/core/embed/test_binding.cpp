@@ -3,6 +3,7 @@
 // re-binding keeps the surface in place while each side follows its own piece.
 #include "core/cut/hybrid_cutter.h"
 #include "core/embed/binding.h"
+#include "core/embed/cut_surface.h"
 #include "core/mesh/topology.h"
 #include "core/mesher/samples.h"
 #include "core/mesher/tetrahedralize.h"
@@ -74,6 +75,67 @@ private slots:
         binding.apply(s.mesh, out);
         for (int v = 0; v < s.surface.vertexCount(); ++v)
             QVERIFY((out[v] - (A * s.surface.positions[v] + b)).norm() <= 10 * tol);
+    }
+
+    void cutMeshAndSurfaceTogether() {
+        // The whole section-5 pipeline: cut the tets, re-bind, cut and close the surface, bind
+        // its new vertices; then each closed surface piece follows its own tet piece.
+        Scene s = sample(Sample::Polyp, 1.0);
+        SurfaceBinding binding;
+        QVERIFY(binding.bind(s.mesh, s.surface).ok());
+        const auto [lo, hi] = boundingBox(s.mesh.positions());
+        const double z = lo.z() + 0.62 * (hi.z() - lo.z());
+        SweepSurface sweep;
+        QVERIFY(SweepSurface::fromStartEnd({Vec3(lo.x() - 5, lo.y() - 5, z), Vec3(hi.x() + 5, lo.y() - 5, z + 0.3)},
+                                           {Vec3(lo.x() - 5, hi.y() + 5, z + 0.2), Vec3(hi.x() + 5, hi.y() + 5, z + 0.5)},
+                                           sweep)
+                    .ok());
+        std::vector<Vec3> positions;
+        binding.apply(s.mesh, positions);
+        HybridCutter cutter(s.mesh);
+        CutOptions options;
+        options.snap = true;
+        options.relaxSteps = 5;
+        CutResult r;
+        QVERIFY(cutter.cut(sweep, options, r).ok());
+        binding.rebind(s.mesh, r.changes, positions, sweep);
+        TriangleSurface cutSurf = s.surface;
+        cutSurf.positions = positions;
+        SurfaceCut sc;
+        QVERIFY(cutSurface(cutSurf, nullptr, sweep, sc).ok());
+        QVERIFY(sc.capTriangles > 0);
+        binding.bindNewVertices(s.mesh, cutSurf.positions, sc.firstNewVertex, sc.sourceEdge, sc.side, r.changes, sweep);
+        QCOMPARE(binding.vertexCount(), cutSurf.vertexCount());
+        std::vector<Vec3> after;
+        binding.apply(s.mesh, after);
+        const double tol = 1e-9 * size(s.surface);
+        for (int v = 0; v < cutSurf.vertexCount(); ++v)
+            QVERIFY2((after[v] - cutSurf.positions[v]).norm() <= tol, qPrintable(QString::number(v)));
+        // Lift the upper tet piece: the surface vertices on the + side (new copies included)
+        // go with it, the others stay; vertices within d of the sweep are the cut's business.
+        const Components c = connectedComponents(s.mesh);
+        QCOMPARE(c.count, 2);
+        int upper = -1;
+        for (int n = 0; n < s.mesh.nodeCount() && upper < 0; ++n)
+            if (s.mesh.pos(n).z() > z + 3)
+                upper = c.nodeComponent[n];
+        const Vec3 lift(0, 0, 10);
+        for (int n = 0; n < s.mesh.nodeCount(); ++n)
+            if (c.nodeComponent[n] == upper)
+                s.mesh.positions()[n] += lift;
+        binding.apply(s.mesh, after);
+        int newMoved = 0, newChecked = 0;
+        for (int v = sc.firstNewVertex; v < cutSurf.vertexCount(); ++v) {
+            const int side = sc.side[v - sc.firstNewVertex];
+            if (side == 0)
+                continue;
+            ++newChecked;
+            const Vec3 expected = side > 0 ? cutSurf.positions[v] + lift : cutSurf.positions[v];
+            if ((after[v] - expected).norm() <= tol)
+                ++newMoved;
+        }
+        QVERIFY(newChecked > 0);
+        QCOMPARE(newMoved, newChecked);
     }
 
     void rebindAfterACut() {
