@@ -1,13 +1,17 @@
 // resect cut MESH --sweep S.json [--sweep S2.json ...] --out OUT.vtu [--report R.json]
 //            [--method hybrid|subdivision] [--triangulation enhanced|standard] [--d 0.2]
 //            [--snap | --no-snap] [--relax-steps N] [--w-spring W] [--w-particle W]
+//            [--surface HI_RES --surface-out OUT.obj]
 #include "app/cli/cli_common.h"
 
 #include "core/cut/hybrid_cutter.h"
+#include "core/embed/binding.h"
+#include "core/embed/cut_surface.h"
 #include "core/mesh/masses.h"
 #include "core/mesh/material.h"
 #include "scenario/mesh_io.h"
 #include "scenario/mesh_summary.h"
+#include "scenario/surface_io.h"
 #include "scenario/sweep_io.h"
 
 #include <QJsonArray>
@@ -50,11 +54,10 @@ int runCut(Args args) {
     options.relaxSteps = args.integer("--relax-steps", 0, 10000).value_or(hybrid ? 10 : 0);
     options.wSpring = args.number("--w-spring", 0.0, 1e6).value_or(options.wSpring);
     options.wParticle = args.number("--w-particle", 0.0, 1e6).value_or(options.wParticle);
-    // The embedded surface is not part of this build yet: refuse the options rather than
-    // ignore them.
-    for (const char* opt : {"--surface", "--surface-out"})
-        if (args.option(opt))
-            badInput(std::string(opt) + ": not available yet (relaxation and the embedded surface come later)");
+    const auto surfaceIn = args.option("--surface");
+    const auto surfaceOut = args.option("--surface-out");
+    if (surfaceIn.has_value() != surfaceOut.has_value())
+        badInput("--surface and --surface-out go together");
     const auto files = args.positionals();
     args.finish();
     if (files.size() != 1)
@@ -64,6 +67,8 @@ int runCut(Args args) {
     requireDistinct(files[0], out);
     if (report)
         requireDistinct(files[0], *report);
+    if (surfaceIn)
+        requireDistinct(*surfaceIn, *surfaceOut);
 
     TetMesh mesh;
     requireOk(readTetMesh(files[0], mesh));
@@ -71,14 +76,37 @@ int runCut(Args args) {
     for (std::size_t i = 0; i < sweepFiles.size(); ++i)
         requireOk(readSweep(sweepFiles[i], sweeps[i]));
 
+    // The embedded high-resolution surface (section 5), bound to the tets before any cut.
+    TriangleSurface surface;
+    SurfaceBinding binding;
+    if (surfaceIn) {
+        requireOk(readSurface(*surfaceIn, surface));
+        requireOk(binding.bind(mesh, surface));
+    }
+    int surfaceSplitEdges = 0, surfaceCapTriangles = 0;
+
     const Material material;
     const QJsonObject before = meshStatsJson(mesh, material);
     HybridCutter cutter(mesh);
     CutStats total;
     for (std::size_t i = 0; i < sweeps.size(); ++i) {
+        std::vector<Vec3> surfacePositions;
+        if (surfaceIn)
+            binding.apply(mesh, surfacePositions);
         CutResult result;
         if (Status s = cutter.cut(sweeps[i], options, result); !s.ok())
             throw CliError{kInternal, sweepFiles[i] + ": " + s.message()};
+        if (surfaceIn) {
+            binding.rebind(mesh, result.changes, surfacePositions, sweeps[i]);
+            surface.positions = surfacePositions;
+            SurfaceCut sc;
+            if (Status s = cutSurface(surface, nullptr, sweeps[i], sc); !s.ok())
+                throw CliError{kInternal, *surfaceIn + ": cutting the surface along " + sweepFiles[i] + ": " + s.message()};
+            binding.bindNewVertices(mesh, surface.positions, sc.firstNewVertex, sc.sourceEdge, sc.side, result.changes,
+                                    sweeps[i]);
+            surfaceSplitEdges += sc.splitEdges;
+            surfaceCapTriangles += sc.capTriangles;
+        }
         const CutStats& c = result.stats;
         total.cutEdges += c.cutEdges;
         total.cutNodes += c.cutNodes;
@@ -98,6 +126,10 @@ int runCut(Args args) {
     // Rest state: masses from the new reference volumes (Eq. 3).
     computeLumpedMasses(mesh, material.density);
     requireOk(writeVtu(out, mesh));
+    if (surfaceIn) {
+        binding.apply(mesh, surface.positions);  // the surface deformed with the tets
+        requireOk(writeSurface(*surfaceOut, surface));
+    }
     const QJsonObject after = meshStatsJson(mesh, material);
 
     if (report) {
@@ -116,6 +148,11 @@ int runCut(Args args) {
                                      {"relax", total.timeMs.relax},
                                      {"update", total.timeMs.update},
                                      {"total", total.timeMs.total}};
+        if (surfaceIn)
+            cut["surface"] = QJsonObject{{"split_edges", surfaceSplitEdges},
+                                         {"cap_triangles", surfaceCapTriangles},
+                                         {"vertices", surface.vertexCount()},
+                                         {"triangles", surface.triangleCount()}};
         QJsonObject r;
         r["method"] = QString::fromStdString(method);
         r["triangulation"] = QString::fromStdString(triangulation);

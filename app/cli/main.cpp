@@ -21,7 +21,7 @@ commands:
                                     write the mesh, surface and summary to DIR
   cut MESH --sweep S.json [--sweep S2.json ...] --out OUT.vtu [--report R.json]
       [--method hybrid|subdivision] [--triangulation enhanced|standard] [--d 0.2] [--snap|--no-snap]
-      [--relax-steps N] [--w-spring W] [--w-particle W]
+      [--relax-steps N] [--w-spring W] [--w-particle W] [--surface HI_RES --surface-out OUT.obj]
                                     cut along one or more sweep surfaces, one after another;
                                     hybrid snaps and relaxes (10 steps) unless told not to
   table1 [--sample polyp|myoma ...] [--d 0.2] [--out TABLE.md]

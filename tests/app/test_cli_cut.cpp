@@ -106,6 +106,31 @@ private slots:
         QVERIFY(std::abs(rep["after"].toObject()["mass"].toDouble() - rep["before"].toObject()["mass"].toDouble()) < 4e-12);
     }
 
+    void cutsTheEmbeddedSurfaceToo() {
+        // The demo writes the meshed polyp and its high-resolution surface.
+        QVERIFY(runCli({"demo", "--out", path("demo")}).code == 0);
+        write(path("head.json"), R"({"curves": [[[-20,-20,12.0],[20,-20,12.5]], [[-20,20,12.3],[20,20,12.8]]]})");
+        const QByteArray surfaceBefore = sha256(path("demo/polyp-surface.obj"));
+        const Run r = runCli({"cut", path("demo/polyp.vtu"), "--sweep", path("head.json"), "--out", path("head.vtu"),
+                              "--report", path("head-report.json"), "--surface", path("demo/polyp-surface.obj"),
+                              "--surface-out", path("head.obj")});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QCOMPARE(sha256(path("demo/polyp-surface.obj")), surfaceBefore);
+        QFile f(path("head-report.json"));
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QJsonObject rep = QJsonDocument::fromJson(f.readAll()).object();
+        QCOMPARE(rep["after"].toObject()["pieces"].toInt(), 2);
+        const QJsonObject surf = rep["cut"].toObject()["surface"].toObject();
+        QVERIFY(surf["split_edges"].toInt() > 0);
+        QVERIFY(surf["cap_triangles"].toInt() > 0);
+        QFile obj(path("head.obj"));
+        QVERIFY(obj.open(QIODevice::ReadOnly));
+        int faces = 0;
+        while (!obj.atEnd())
+            faces += obj.readLine().startsWith("f ") ? 1 : 0;
+        QCOMPARE(faces, surf["triangles"].toInt());
+    }
+
     void severalSweepsInARow() {
         const Run r = runCli({"cut", path("box.vtu"), "--sweep", path("low.json"), "--sweep", path("high.json"),
                               "--out", path("two.vtu")});
@@ -150,7 +175,9 @@ private slots:
         QTest::newRow("snap and no-snap") << QStringList{"--snap", "--no-snap"} << ok << "--snap";
         QTest::newRow("negative relaxation steps") << QStringList{"--relax-steps", "-3"} << ok << "--relax-steps";
         QTest::newRow("weight not a number") << QStringList{"--w-spring", "heavy"} << ok << "--w-spring";
-        QTest::newRow("surface not available") << QStringList{"--surface", "x.obj"} << ok << "--surface";
+        QTest::newRow("surface without output") << QStringList{"--surface", "x.obj"} << ok << "--surface";
+        QTest::newRow("missing surface file") << QStringList{"--surface", "/nonexistent/s.obj", "--surface-out", "o.obj"} << ok
+                                              << "/nonexistent/s.obj";
     }
     void badInput() {
         QFETCH(QStringList, extra);
