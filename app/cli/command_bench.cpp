@@ -5,7 +5,11 @@
 #include "app/cli/cli_common.h"
 
 #include "core/cut/hybrid_cutter.h"
+#include "core/embed/binding.h"
+#include "core/embed/cut_surface.h"
 #include "core/mesh/box_mesh.h"
+#include "core/mesher/samples.h"
+#include "core/mesher/tetrahedralize.h"
 #include "scenario/atomic_file.h"
 
 #include <algorithm>
@@ -87,6 +91,73 @@ int runCutScaling(Args& args) {
 
 } // namespace
 
-int runBench(Args args) { return runCutScaling(args); }
+/// Embedded-surface costs (section 5): bind once, apply per frame (per vertex), and after a
+/// cut re-bind (per re-bound vertex) and cut the surface, for a myoma surface of growing size.
+int runSurface(Args& args) {
+    std::vector<double> details{1, 5};
+    if (auto text = args.option("--details")) {
+        details.clear();
+        std::stringstream ss(*text);
+        std::string item;
+        while (std::getline(ss, item, ',')) {
+            char* end = nullptr;
+            const double v = std::strtod(item.c_str(), &end);
+            if (end == item.c_str() || *end != 0 || !(v > 0) || v > 40)
+                badInput("--details: expected numbers in (0, 40], got '" + item + "'");
+            details.push_back(v);
+        }
+    }
+    args.finish();
+    std::printf("%10s %10s %12s %14s %16s %14s %14s\n", "triangles", "vertices", "bind_ms", "apply_ns_vertex",
+                "rebound_vertices", "rebind_us_vtx", "surf_cut_ms");
+    for (double detail : details) {
+        TriangleSurface surface = sampleSurface(Sample::Myoma, detail);
+        TetMesh mesh;
+        requireOk(tetrahedralize(surface, MeshingOptions{}, mesh));
+        const auto ms = [](auto t0) {
+            return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        };
+        SurfaceBinding binding;
+        auto t0 = std::chrono::steady_clock::now();
+        requireOk(binding.bind(mesh, surface));
+        const double bindMs = ms(t0);
+        std::vector<Vec3> positions;
+        std::vector<double> apply;
+        for (int r = 0; r < 15; ++r) {
+            t0 = std::chrono::steady_clock::now();
+            binding.apply(mesh, positions);
+            apply.push_back(ms(t0));
+        }
+        std::sort(apply.begin(), apply.end());
+        const auto [lo, hi] = boundingBox(mesh.positions());
+        const double z = 0.5 * (lo.z() + hi.z()) + 0.013;
+        SweepSurface sweep;
+        requireOk(SweepSurface::fromStartEnd({Vec3(lo.x() - 5, lo.y() - 5, z), Vec3(hi.x() + 5, lo.y() - 5, z + 0.2)},
+                                             {Vec3(lo.x() - 5, hi.y() + 5, z + 0.1), Vec3(hi.x() + 5, hi.y() + 5, z + 0.3)},
+                                             sweep));
+        HybridCutter cutter(mesh);
+        CutResult result;
+        requireOk(cutter.cut(sweep, CutOptions{}, result));
+        t0 = std::chrono::steady_clock::now();
+        const int rebound = binding.rebind(mesh, result.changes, positions, sweep);
+        const double rebindMs = ms(t0);
+        surface.positions = positions;
+        SurfaceCut cut;
+        t0 = std::chrono::steady_clock::now();
+        requireOk(cutSurface(surface, nullptr, sweep, cut));
+        const double cutMs = ms(t0);
+        std::printf("%10d %10d %12.1f %14.2f %16d %14.3f %14.1f\n", surface.triangleCount(), binding.vertexCount(),
+                    bindMs, 1e6 * apply[apply.size() / 2] / binding.vertexCount(), rebound,
+                    1e3 * rebindMs / std::max(1, rebound), cutMs);
+        std::fflush(stdout);
+    }
+    return kOk;
+}
+
+int runBench(Args args) {
+    if (args.flag("surface"))
+        return runSurface(args);
+    return runCutScaling(args);
+}
 
 } // namespace resect::cli

@@ -28,6 +28,8 @@ commands:
                                     the paper's Table 1 on the built-in samples
   bench cut-scaling [--sizes 10000,100000,1000000] [--repeats 7] [--out scaling.csv]
                                     the same local cut on meshes of growing size
+  bench surface [--details 1,5]     embedded surface: bind, apply, re-bind, cut (myoma
+                                    surface at 40k x detail triangles)
 
 exit codes: 0 success, 2 bad input, 1 internal failure
 )";

@@ -60,6 +60,7 @@ Status SurfaceBinding::bind(const TetMesh& mesh, const TriangleSurface& surface)
     std::vector<int> candidates;
     const double cell = grid.cellSize();
     constexpr double kTolerance = 1e-9;
+    constexpr double kNearOutside = 0.25;  ///< a weight down to -0.25: within a quarter tet
     for (int v = 0; v < n; ++v) {
         const Vec3& p = surface.positions[v];
         // Grow the search box until a containing tet (or, far out, any tet) is found.
@@ -68,6 +69,10 @@ Status SurfaceBinding::bind(const TetMesh& mesh, const TriangleSurface& surface)
             grid.query(box, candidates);
             bindVertex(mesh, v, p, candidates);
             if (m_tet[v] >= 0 && smallest(m_weights[v]) >= -kTolerance)
+                break;
+            // Slightly outside the coarse mesh (its boundary lies inside the curved surface):
+            // the tet found in the vertex's own cell is near enough.
+            if (m_tet[v] >= 0 && smallest(m_weights[v]) >= -kNearOutside)
                 break;
             if (m_tet[v] >= 0 && r >= 2 * cell)
                 break;  // outside the mesh: the nearest tet found is kept
@@ -170,8 +175,8 @@ void SurfaceBinding::bindNewVertices(const TetMesh& mesh, const std::vector<Vec3
         m_order[v] = v;
 }
 
-void SurfaceBinding::rebind(const TetMesh& mesh, const CutChanges& changes, const std::vector<Vec3>& positions,
-                            const SweepSurface& sweep) {
+int SurfaceBinding::rebind(const TetMesh& mesh, const CutChanges& changes, const std::vector<Vec3>& positions,
+                           const SweepSurface& sweep) {
     // Pieces of every changed tet: itself (its slot now holds a piece) and its appended pieces.
     std::unordered_map<int, std::vector<int>> pieces;
     for (int t : changes.modifiedTets)
@@ -245,6 +250,7 @@ void SurfaceBinding::rebind(const TetMesh& mesh, const CutChanges& changes, cons
         m_verticesOfTet[t].clear();
     for (int v : affected)
         m_verticesOfTet[m_tet[v]].push_back(v);
+    return static_cast<int>(affected.size());
 }
 
 } // namespace resect

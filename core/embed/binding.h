@@ -32,8 +32,9 @@ public:
     /// `positions` are the vertices' current positions (as apply() gave them before the cut).
     /// Costs in proportion to the affected vertices; the streaming order is refreshed by bind().
     /// The vertex and its new tet are on the same side of the sweep (section 5.1).
-    void rebind(const TetMesh& mesh, const CutChanges& changes, const std::vector<Vec3>& positions,
-                const SweepSurface& sweep);
+    /// Returns how many vertices were re-bound.
+    int rebind(const TetMesh& mesh, const CutChanges& changes, const std::vector<Vec3>& positions,
+               const SweepSurface& sweep);
 
     /// Binds vertices added by a surface cut (from `first` on): each to the tet containing it
     /// best among the tets near the ones its source edge's ends are bound to, on its own side
