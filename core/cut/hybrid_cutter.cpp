@@ -135,6 +135,19 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
     stats.separatedTets = separation.separatedTets;
     stats.duplicatedNodes = separation.duplicatedNodes;
 
+    // Nodes on the cut (needed by relaxation and by the change list): cut nodes, split points,
+    // their copies, and the points placed on the sweep inside partially cut tets.
+    changes.cutSurfaceNodes = selection.cutNodes;
+    for (const auto& [key, n] : decomposition.edgePoint)
+        changes.cutSurfaceNodes.push_back(n);
+    for (const auto& [orig, copy] : changes.duplicatedNodes)
+        changes.cutSurfaceNodes.push_back(copy);
+    for (int n : decomposition.sweepPoints)
+        changes.cutSurfaceNodes.push_back(n);
+    std::sort(changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end());
+    changes.cutSurfaceNodes.erase(std::unique(changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end()),
+                                  changes.cutSurfaceNodes.end());
+
     if (options.snap && !changes.cutNodes.empty()) {
         t0 = std::chrono::steady_clock::now();
         SnapOptions snap;
@@ -164,38 +177,17 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
         relax.wParticle = options.wParticle;
         relax.rings = options.relaxRings;
         relax.damping = options.relaxDamping;
-        // The change list's cut-surface nodes are needed here; gather them early.
-        CutChanges view = changes;
-        for (int n : selection.cutNodes)
-            view.cutSurfaceNodes.push_back(n);
-        for (const auto& [key, n] : decomposition.edgePoint)
-            view.cutSurfaceNodes.push_back(n);
-        for (const auto& [orig, copy] : changes.duplicatedNodes)
-            view.cutSurfaceNodes.push_back(copy);
-        for (int n : decomposition.sweepPoints)
-            view.cutSurfaceNodes.push_back(n);
-        const RelaxResult relaxed = relaxNodes(m_mesh, sweep, view, fixed, relax);
+        const RelaxResult relaxed = relaxNodes(m_mesh, sweep, changes, fixed, relax);
         stats.relaxedMoves = relaxed.acceptedMoves;
         stats.rejectedRelaxMoves = relaxed.rejectedMoves;
         relaxedNodes = relaxed.movedNodes;
         stats.timeMs.relax = msSince(t0);
     }
 
-    // Change list: modified tets once, cut-surface nodes, nodes whose tets changed.
+    // Change list: modified tets once, nodes whose tets changed.
     std::sort(changes.modifiedTets.begin(), changes.modifiedTets.end());
     changes.modifiedTets.erase(std::unique(changes.modifiedTets.begin(), changes.modifiedTets.end()),
                                changes.modifiedTets.end());
-    for (int n : selection.cutNodes)
-        changes.cutSurfaceNodes.push_back(n);
-    for (const auto& [key, n] : decomposition.edgePoint)
-        changes.cutSurfaceNodes.push_back(n);
-    for (const auto& [orig, copy] : changes.duplicatedNodes)
-        changes.cutSurfaceNodes.push_back(copy);
-    for (int n : decomposition.sweepPoints)
-        changes.cutSurfaceNodes.push_back(n);
-    std::sort(changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end());
-    changes.cutSurfaceNodes.erase(std::unique(changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end()),
-                                  changes.cutSurfaceNodes.end());
     std::unordered_set<int> touched;
     for (int t : changes.modifiedTets)
         touched.insert(m_mesh.tet(t).begin(), m_mesh.tet(t).end());
