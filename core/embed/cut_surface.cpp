@@ -40,27 +40,25 @@ Status cutSurface(TriangleSurface& surface, std::vector<Vec3>* rest, const Sweep
     std::unordered_map<std::uint64_t, Crossing> crossings;
     SegmentQuery query;
     std::vector<int> scratch;
+    // Each edge of a closed surface is in two triangles, once in each direction: test it
+    // from the direction low -> high only, and keep only the crossed ones.
     for (const Tri& t : surface.triangles)
         for (int e = 0; e < 3; ++e) {
             const int a = t[e], b = t[(e + 1) % 3];
-            const std::uint64_t k = key(a, b);
-            if (crossings.count(k))
+            if (a > b)
                 continue;
-            const int lo = std::min(a, b), hi = std::max(a, b);
-            intersectSegment(sweep, surface.positions[lo], surface.positions[hi], query, scratch);
+            intersectSegment(sweep, surface.positions[a], surface.positions[b], query, scratch);
             if (query.hits.size() % 2 == 1) {
                 Crossing c;
                 c.hit = query.hits[query.hits.size() / 2];
-                c.low = lo;
-                c.high = hi;
-                crossings.emplace(k, c);
-            } else {
-                crossings.emplace(k, Crossing{});  // tested, not crossed (low == -1)
+                c.low = a;
+                c.high = b;
+                crossings.emplace(key(a, b), c);
             }
         }
     const auto crossingOf = [&](int a, int b) -> Crossing* {
         auto it = crossings.find(key(a, b));
-        return it == crossings.end() || it->second.low < 0 ? nullptr : &it->second;
+        return it == crossings.end() ? nullptr : &it->second;
     };
     // 2. Triangles with one crossed edge make their crossing a shared face vertex.
     std::vector<int> crossedCount(surface.triangleCount(), 0);
@@ -192,8 +190,6 @@ Status cutSurface(TriangleSurface& surface, std::vector<Vec3>* rest, const Sweep
     std::unordered_map<int, int> plusOf, minusOf;  // new vertex -> its + / - copy
     std::unordered_set<int> sharedVertex, plusVertex;
     for (const auto& [k, c] : crossings) {
-        if (c.low < 0)
-            continue;
         plusOf[c.plus] = c.plus;
         plusOf[c.minus] = c.plus;
         minusOf[c.plus] = c.minus;
