@@ -3,6 +3,7 @@
 #include "core/cut/snap_nodes.h"
 #include "core/mesh/predicates.h"
 #include "core/mesh/quality.h"
+#include "core/mesh/topology.h"
 
 #include <algorithm>
 #include <cmath>
@@ -76,25 +77,10 @@ RelaxResult relaxNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChange
         return it == groupOf.end() ? std::vector<int>{n} : it->second;
     };
     // A node on the boundary that is not on this cut lies on an earlier surface: fixed too.
-    std::vector<int> scratch;
-    const auto onBoundary = [&](int n) {
-        for (int t : mesh.nodeTets(n)) {
-            const Tet& q = mesh.tet(t);
-            for (const auto& lf : kTetFaces) {
-                const int a = q[lf[0]], b = q[lf[1]], c = q[lf[2]];
-                if (a != n && b != n && c != n)
-                    continue;
-                mesh.faceTets(a, b, c, scratch);
-                if (scratch.size() == 1)
-                    return true;
-            }
-        }
-        return false;
-    };
     std::vector<int> movable;
     for (int n : nodes) {
         const bool cutNode = onCut.count(n) > 0;
-        if (fixed.count(n) || (!cutNode && onBoundary(n))) {
+        if (fixed.count(n) || (!cutNode && isBoundaryNode(mesh, n))) {
             ++result.fixed;
             continue;
         }

@@ -2,6 +2,7 @@
 
 #include "core/mesh/predicates.h"
 #include "core/mesh/quality.h"
+#include "core/mesh/topology.h"
 
 #include <Eigen/LU>
 
@@ -45,25 +46,10 @@ Vec3 referenceFromDeformed(const TetMesh& mesh, const std::vector<int>& group, c
 }
 
 std::vector<int> boundaryNodesAmong(const TetMesh& mesh, const std::vector<int>& nodes) {
-    std::vector<int> result, scratch;
-    for (int n : nodes) {
-        bool boundary = false;
-        for (int t : mesh.nodeTets(n)) {
-            const Tet& q = mesh.tet(t);
-            for (const auto& lf : kTetFaces) {
-                const int a = q[lf[0]], b = q[lf[1]], c = q[lf[2]];
-                if (a != n && b != n && c != n)
-                    continue;
-                mesh.faceTets(a, b, c, scratch);
-                if (scratch.size() == 1)
-                    boundary = true;
-            }
-            if (boundary)
-                break;
-        }
-        if (boundary)
+    std::vector<int> result;
+    for (int n : nodes)
+        if (isBoundaryNode(mesh, n))
             result.push_back(n);
-    }
     return result;
 }
 

@@ -83,6 +83,22 @@ std::vector<BoundaryFace> boundaryFaces(const TetMesh& mesh) {
     return result;
 }
 
+bool isBoundaryNode(const TetMesh& mesh, int n) {
+    std::vector<int> scratch;
+    for (int t : mesh.nodeTets(n)) {
+        const Tet& q = mesh.tet(t);
+        for (const auto& lf : kTetFaces) {
+            const int a = q[lf[0]], b = q[lf[1]], c = q[lf[2]];
+            if (a != n && b != n && c != n)
+                continue;
+            mesh.faceTets(a, b, c, scratch);
+            if (scratch.size() == 1)
+                return true;
+        }
+    }
+    return false;
+}
+
 Components connectedComponents(const TetMesh& mesh) {
     // Union-find over nodes: the nodes of a tet are joined; tets inherit their nodes' root.
     std::vector<int> parent(mesh.nodeCount());

@@ -28,6 +28,9 @@ struct BoundaryFace {
 };
 std::vector<BoundaryFace> boundaryFaces(const TetMesh& mesh);
 
+/// True if node n has an incident face that belongs to one tet only (O(valence^2)).
+bool isBoundaryNode(const TetMesh& mesh, int n);
+
 /// Connected components: tets are connected when they share a node (nodes separated by a
 /// cut are distinct, so each piece of a cut mesh is one component).
 struct Components {

@@ -44,20 +44,6 @@ SweepSurface tiltedPlane(double scale, unsigned seed) {
     return sweep;
 }
 
-bool onBoundary(const TetMesh& m, int n) {
-    std::vector<int> s;
-    for (int t : m.nodeTets(n))
-        for (const auto& lf : kTetFaces) {
-            const Tet& q = m.tet(t);
-            if (q[lf[0]] != n && q[lf[1]] != n && q[lf[2]] != n)
-                continue;
-            m.faceTets(q[lf[0]], q[lf[1]], q[lf[2]], s);
-            if (s.size() == 1)
-                return true;
-        }
-    return false;
-}
-
 } // namespace
 
 class TestRelaxNodes : public QObject {
@@ -80,7 +66,7 @@ private slots:
         const TetMesh input = jitteredBoxWithMasses(scale, seed);
         std::vector<char> wasBoundary(input.nodeCount());
         for (int n = 0; n < input.nodeCount(); ++n)
-            wasBoundary[n] = onBoundary(input, n);
+            wasBoundary[n] = isBoundaryNode(input, n);
         const SweepSurface sweep = tiltedPlane(scale, seed);
         CutOptions options;
         options.snap = snap;

@@ -29,6 +29,22 @@ Scene sample(Sample which, double scale) {
     return s;
 }
 
+/// Moves every node of the piece that has a node above height `above` by `lift`; returns false
+/// unless the mesh is in exactly two pieces.
+bool liftUpperPiece(TetMesh& mesh, double above, const Vec3& lift) {
+    const Components c = connectedComponents(mesh);
+    if (c.count != 2)
+        return false;
+    int upper = -1;
+    for (int n = 0; n < mesh.nodeCount() && upper < 0; ++n)
+        if (mesh.pos(n).z() > above)
+            upper = c.nodeComponent[n];
+    for (int n = 0; n < mesh.nodeCount(); ++n)
+        if (c.nodeComponent[n] == upper)
+            mesh.positions()[n] += lift;
+    return upper >= 0;
+}
+
 double size(const TriangleSurface& s) {
     const auto [lo, hi] = boundingBox(s.positions);
     return (hi - lo).norm();
@@ -113,16 +129,8 @@ private slots:
             QVERIFY2((after[v] - cutSurf.positions[v]).norm() <= tol, qPrintable(QString::number(v)));
         // Lift the upper tet piece: the surface vertices on the + side (new copies included)
         // go with it, the others stay; vertices within d of the sweep are the cut's business.
-        const Components c = connectedComponents(s.mesh);
-        QCOMPARE(c.count, 2);
-        int upper = -1;
-        for (int n = 0; n < s.mesh.nodeCount() && upper < 0; ++n)
-            if (s.mesh.pos(n).z() > z + 3)
-                upper = c.nodeComponent[n];
         const Vec3 lift(0, 0, 10);
-        for (int n = 0; n < s.mesh.nodeCount(); ++n)
-            if (c.nodeComponent[n] == upper)
-                s.mesh.positions()[n] += lift;
+        QVERIFY(liftUpperPiece(s.mesh, z + 3, lift));
         binding.apply(s.mesh, after);
         int newMoved = 0, newChecked = 0;
         for (int v = sc.firstNewVertex; v < cutSurf.vertexCount(); ++v) {
@@ -168,16 +176,8 @@ private slots:
         for (int v = 0; v < s.surface.vertexCount(); ++v)
             QVERIFY2((after[v] - before[v]).norm() <= tol, qPrintable(QString::number(v)));
         // Each side follows its own piece: lift the piece above the cut.
-        const Components c = connectedComponents(s.mesh);
-        QCOMPARE(c.count, 2);
-        int upper = -1;
-        for (int n = 0; n < s.mesh.nodeCount() && upper < 0; ++n)
-            if (s.mesh.pos(n).z() > z + 2)
-                upper = c.nodeComponent[n];
         const Vec3 lift(0, 0, 10);
-        for (int n = 0; n < s.mesh.nodeCount(); ++n)
-            if (c.nodeComponent[n] == upper)
-                s.mesh.positions()[n] += lift;
+        QVERIFY(liftUpperPiece(s.mesh, z + 2, lift));
         binding.apply(s.mesh, after);
         int checked = 0;
         for (int v = 0; v < s.surface.vertexCount(); ++v) {
