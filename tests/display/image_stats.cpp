@@ -49,4 +49,23 @@ QRect centralRegion(const QImage& image, double fraction) {
     return QRect((image.width() - w) / 2, (image.height() - h) / 2, w, h);
 }
 
+QString describe(const ImageStats& stats) {
+    return QStringLiteral("%1 distinct colours, %2 of pixels differ from the background, "
+                          "most frequent colour #%3 (%4 of pixels)")
+        .arg(stats.distinctColours)
+        .arg(stats.differingFraction)
+        .arg(stats.background & 0xffffffu, 6, 16, QLatin1Char('0'))
+        .arg(stats.backgroundShare);
+}
+
+QString renderedViewProblem(const ImageStats& stats, QRgb background) {
+    if (colourDistance(stats.background, background) > 6)
+        return QStringLiteral("the most frequent colour is not the view's background: ") + describe(stats);
+    if (stats.distinctColours < 50)
+        return QStringLiteral("too few colours: ") + describe(stats);
+    if (stats.differingFraction < 0.10 || stats.differingFraction > 0.95)
+        return QStringLiteral("the mesh covers too little or too much of the view: ") + describe(stats);
+    return {};
+}
+
 } // namespace resect

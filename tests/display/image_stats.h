@@ -5,6 +5,7 @@
 #include <QColor>
 #include <QImage>
 #include <QRect>
+#include <QString>
 
 namespace resect {
 
@@ -28,5 +29,14 @@ ImageStats analyseRegion(const QImage& image, const QRect& region, QRgb referenc
 /// The middle of a window screenshot, clear of menu bar, status bar and borders: the
 /// central `fraction` of the width and height.
 QRect centralRegion(const QImage& image, double fraction);
+
+/// One line describing the statistics, for test output.
+QString describe(const ImageStats& stats);
+
+/// Empty if the statistics show a rendered 3-D view: its most frequent colour is the view's
+/// own `background` (VTK rendered, not the placeholder or Qt's fill), it has at least 50
+/// colours, and 10 % to 95 % of its pixels differ from the background (a framed mesh, not
+/// an empty or a filled view). Otherwise what is wrong, with describe().
+QString renderedViewProblem(const ImageStats& stats, QRgb background);
 
 } // namespace resect

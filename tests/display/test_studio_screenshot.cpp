@@ -118,22 +118,12 @@ void TestStudioScreenshot::rendersSampleUnderXvfb() {
     // a lit, quality-coloured mesh.
     const ImageStats stats =
         analyseRegion(image, centralRegion(image, 0.8), viewportBackground(), 6);
-    const QString summary =
-        QStringLiteral("%1: %2 distinct colours, %3 of pixels differ from the background, "
-                       "most frequent colour #%4 (%5 of pixels)")
-            .arg(png)
-            .arg(stats.distinctColours)
-            .arg(stats.differingFraction)
-            .arg(stats.background & 0xffffffu, 6, 16, QLatin1Char('0'))
-            .arg(stats.backgroundShare);
-    qInfo().noquote() << summary;
-    // What surrounds the mesh is the 3-D view's own background: VTK rendered into the
-    // window (not the placeholder, not Qt's fill showing through a transparent frame).
-    QVERIFY2(colourDistance(stats.background, viewportBackground()) <= 6, qPrintable(summary));
-    QVERIFY2(stats.distinctColours >= 50, qPrintable(summary));
-    QVERIFY2(stats.differingFraction >= 0.10, qPrintable(summary));
-    // Some background shows: the mesh is framed, not filling (or missing from) the view.
-    QVERIFY2(stats.differingFraction <= 0.95, qPrintable(summary));
+    qInfo().noquote() << png << describe(stats);
+    // What surrounds the mesh is the 3-D view's own background (VTK rendered into the window,
+    // not the placeholder, not Qt's fill showing through a transparent frame), and the mesh
+    // is framed in it, many shades of it.
+    const QString problem = renderedViewProblem(stats, viewportBackground());
+    QVERIFY2(problem.isEmpty(), qPrintable(png + QStringLiteral(": ") + problem));
 }
 
 void TestStudioScreenshot::offscreenFallsBackToPlaceholder() {
