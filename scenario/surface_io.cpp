@@ -17,6 +17,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <cstring>
@@ -224,21 +225,10 @@ Status readSurfaceImpl(const std::string& path, TriangleSurface& out) {
 // ---------------------------------------------------------------------------------------
 // Writing
 
-/// A one-mesh, one-material scene holding the surface (vertices as float, as assimp keeps
-/// them). aiScene's destructor frees everything allocated here with new / new[].
-std::unique_ptr<aiScene> makeScene(const TriangleSurface& surface) {
-    auto scene = std::make_unique<aiScene>();
-    scene->mRootNode = new aiNode();
-    scene->mRootNode->mNumMeshes = 1;
-    scene->mRootNode->mMeshes = new unsigned[1]{0};
-
-    scene->mNumMaterials = 1;
-    scene->mMaterials = new aiMaterial* [1] { new aiMaterial() };
-
-    scene->mNumMeshes = 1;
-    scene->mMeshes = new aiMesh* [1] { new aiMesh() };
-    aiMesh& mesh = *scene->mMeshes[0];
-    mesh.mMaterialIndex = 0;
+/// Fills `mesh` with the given triangles over all of `surface`'s vertices (vertices as
+/// float, as assimp keeps them) and texture coordinates `uvs` (empty: none).
+void fillMesh(aiMesh& mesh, const TriangleSurface& surface, const std::vector<Tri>& triangles,
+              const std::vector<Eigen::Vector2d>& uvs) {
     mesh.mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
     mesh.mNumVertices = static_cast<unsigned>(surface.positions.size());
     mesh.mVertices = new aiVector3D[mesh.mNumVertices];
@@ -247,23 +237,119 @@ std::unique_ptr<aiScene> makeScene(const TriangleSurface& surface) {
         mesh.mVertices[i] = aiVector3D(static_cast<ai_real>(p.x()), static_cast<ai_real>(p.y()),
                                        static_cast<ai_real>(p.z()));
     }
-    if (!surface.uvs.empty()) {
+    if (!uvs.empty()) {
         mesh.mNumUVComponents[0] = 2;
         mesh.mTextureCoords[0] = new aiVector3D[mesh.mNumVertices];
-        for (unsigned i = 0; i < mesh.mNumVertices; ++i)
-            mesh.mTextureCoords[0][i] = aiVector3D(static_cast<ai_real>(surface.uvs[i].x()),
-                                                   static_cast<ai_real>(surface.uvs[i].y()), 0);
+        for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
+            // Vertices off a cut face have NaN cut coordinates: write zeros for them.
+            const Eigen::Vector2d uv = uvs[i].allFinite() ? uvs[i] : Eigen::Vector2d::Zero();
+            mesh.mTextureCoords[0][i] =
+                aiVector3D(static_cast<ai_real>(uv.x()), static_cast<ai_real>(uv.y()), 0);
+        }
     }
-    mesh.mNumFaces = static_cast<unsigned>(surface.triangles.size());
+    mesh.mNumFaces = static_cast<unsigned>(triangles.size());
     mesh.mFaces = new aiFace[mesh.mNumFaces];
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
         aiFace& face = mesh.mFaces[f];
         face.mNumIndices = 3;
         face.mIndices = new unsigned[3];
         for (int k = 0; k < 3; ++k)
-            face.mIndices[k] = static_cast<unsigned>(surface.triangles[f][k]);
+            face.mIndices[k] = static_cast<unsigned>(triangles[f][k]);
+    }
+}
+
+/// The surface as an assimp scene: one mesh (material "skin") with the texture coordinates
+/// `uvs`, and, for a cut surface, a second mesh (material "cut") with the cut faces, whose
+/// texture coordinates are the sweep's (u, v) (section 5.2). aiScene's destructor frees
+/// everything allocated here with new / new[].
+std::unique_ptr<aiScene> makeScene(const TriangleSurface& surface) {
+    std::vector<Tri> skin, cut;
+    for (int f = 0; f < surface.triangleCount(); ++f)
+        (surface.isCutFace(f) ? cut : skin).push_back(surface.triangles[f]);
+    const unsigned meshes = cut.empty() || skin.empty() ? 1 : 2;
+    auto scene = std::make_unique<aiScene>();
+    scene->mRootNode = new aiNode();
+    scene->mRootNode->mNumMeshes = meshes;
+    scene->mRootNode->mMeshes = new unsigned[meshes];
+    scene->mNumMaterials = meshes;
+    scene->mMaterials = new aiMaterial*[meshes];
+    scene->mNumMeshes = meshes;
+    scene->mMeshes = new aiMesh*[meshes];
+    const auto add = [&](unsigned i, const char* name, const std::vector<Tri>& triangles,
+                         const std::vector<Eigen::Vector2d>& uvs) {
+        scene->mRootNode->mMeshes[i] = i;
+        scene->mMaterials[i] = new aiMaterial();
+        const aiString materialName(name);
+        scene->mMaterials[i]->AddProperty(&materialName, AI_MATKEY_NAME);
+        scene->mMeshes[i] = new aiMesh();
+        scene->mMeshes[i]->mMaterialIndex = i;
+        scene->mMeshes[i]->mName = aiString(name);
+        fillMesh(*scene->mMeshes[i], surface, triangles, uvs);
+    };
+    const bool cutUvs = surface.cutUvs.size() == surface.positions.size();
+    if (meshes == 2) {
+        add(0, "skin", skin, surface.uvs);
+        add(1, "cut", cut, cutUvs ? surface.cutUvs : std::vector<Eigen::Vector2d>{});
+    } else {
+        add(0, skin.empty() ? "cut" : "skin", surface.triangles, surface.uvs);
     }
     return scene;
+}
+
+/// Wavefront OBJ, written directly (assimp's OBJ exporter merges vertices that coincide, which
+/// would glue the two sides of a cut back together). Every vertex is one "v" line, in order,
+/// with 17 significant digits; the skin's texture coordinates are "vt" lines, one per vertex;
+/// cut faces (group "cut") use further "vt" lines holding the sweep's (u, v).
+Status writeObj(const std::string& path, const TriangleSurface& surface, const std::string& file) {
+    std::ofstream os(file, std::ios::binary | std::ios::trunc);
+    if (!os)
+        return Status::error(path + ": cannot open the temporary file for writing");
+    os.precision(17);
+    os << "# Resect Studio surface: " << surface.vertexCount() << " vertices, "
+       << surface.triangleCount() << " triangles\n";
+    for (const Vec3& p : surface.positions)
+        os << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+    const bool skinUv = !surface.uvs.empty();
+    if (skinUv)
+        for (const Eigen::Vector2d& uv : surface.uvs)
+            os << "vt " << uv.x() << ' ' << uv.y() << '\n';
+    // Texture coordinates of cut-face corners: one "vt" per vertex on a cut face.
+    const bool cutUv = surface.cutUvs.size() == surface.positions.size();
+    std::vector<long> cutVt(cutUv ? surface.positions.size() : 0, 0);
+    long nextVt = skinUv ? static_cast<long>(surface.uvs.size()) + 1 : 1;
+    if (cutUv)
+        for (int f = 0; f < surface.triangleCount(); ++f)
+            if (surface.isCutFace(f))
+                for (int v : surface.triangles[f])
+                    if (cutVt[v] == 0 && surface.cutUvs[v].allFinite()) {
+                        os << "vt " << surface.cutUvs[v].x() << ' ' << surface.cutUvs[v].y() << '\n';
+                        cutVt[v] = nextVt++;
+                    }
+    const auto face = [&](const Tri& t, bool cut) {
+        os << 'f';
+        for (int v : t) {
+            os << ' ' << v + 1;
+            if (cut && cutVt[v] > 0)
+                os << '/' << cutVt[v];
+            else if (!cut && skinUv)
+                os << '/' << v + 1;
+        }
+        os << '\n';
+    };
+    os << "g skin\n";
+    for (int f = 0; f < surface.triangleCount(); ++f)
+        if (!surface.isCutFace(f))
+            face(surface.triangles[f], false);
+    if (std::find(surface.cutFaces.begin(), surface.cutFaces.end(), 1) != surface.cutFaces.end()) {
+        os << "g cut\n";
+        for (int f = 0; f < surface.triangleCount(); ++f)
+            if (surface.isCutFace(f))
+                face(surface.triangles[f], cutUv);
+    }
+    os.close();
+    if (!os)
+        return Status::error(path + ": write error");
+    return Status::success();
 }
 
 /// Exports `scene` with assimp's exporter `formatId` to `file`.
@@ -346,6 +432,10 @@ Status checkWritable(const std::string& path, const TriangleSurface& surface) {
         return Status::error(path + ": the surface has " + std::to_string(surface.uvs.size()) +
                              " texture coordinates for " +
                              std::to_string(surface.positions.size()) + " vertices");
+    if (!surface.cutFaces.empty() && surface.cutFaces.size() != surface.triangles.size())
+        return Status::error(path + ": the surface's cut-face flags do not match its triangles");
+    if (!surface.cutUvs.empty() && surface.cutUvs.size() != surface.positions.size())
+        return Status::error(path + ": the surface's cut-face texture coordinates do not match its vertices");
     const auto n = static_cast<int>(surface.positions.size());
     for (std::size_t f = 0; f < surface.triangles.size(); ++f)
         for (int v : surface.triangles[f])
@@ -362,12 +452,9 @@ Status checkWritable(const std::string& path, const TriangleSurface& surface) {
 
 Status writeSurfaceImpl(const std::string& path, const TriangleSurface& surface) {
     const std::string ext = lowerExtension(path);
-    // Exporter ids of assimp 5.2. OBJ without a .mtl file: a material file would be named
-    // after the temporary file and be left behind.
+    // Exporter ids of assimp 5.2; OBJ and OFF are written directly.
     const char* formatId = nullptr;
-    if (ext == ".obj")
-        formatId = "objnomtl";
-    else if (ext == ".stl")
+    if (ext == ".stl")
         formatId = "stlb";
     else if (ext == ".ply")
         formatId = "ply";
@@ -375,7 +462,7 @@ Status writeSurfaceImpl(const std::string& path, const TriangleSurface& surface)
         formatId = "glb2";
     else if (ext == ".gltf")
         formatId = "gltf2";
-    else if (ext != ".off")
+    else if (ext != ".off" && ext != ".obj")
         return Status::error(path + ": unknown surface extension '" + ext +
                              "'; expected .obj, .stl, .ply, .off, .glb or .gltf");
     if (Status s = checkWritable(path, surface); !s)
@@ -384,6 +471,9 @@ Status writeSurfaceImpl(const std::string& path, const TriangleSurface& surface)
     if (ext == ".off")
         return writeAtomically(
             path, [&](const std::string& tmp) { return writeOff(path, surface, tmp); });
+    if (ext == ".obj")
+        return writeAtomically(
+            path, [&](const std::string& tmp) { return writeObj(path, surface, tmp); });
     const std::unique_ptr<aiScene> scene = makeScene(surface);
     return writeAtomically(path, [&](const std::string& tmp) {
         if (ext == ".gltf")

@@ -108,8 +108,8 @@ int runSurface(Args& args) {
         }
     }
     args.finish();
-    std::printf("%10s %10s %12s %14s %16s %14s %14s\n", "triangles", "vertices", "bind_ms", "apply_ns_vertex",
-                "rebound_vertices", "rebind_us_vtx", "surf_cut_ms");
+    std::printf("%10s %10s %12s %14s %16s %14s %12s %12s\n", "triangles", "vertices", "bind_ms", "apply_ns_vertex",
+                "rebound_vertices", "rebind_us_vtx", "near_tris", "surf_cut_ms");
     for (double detail : details) {
         TriangleSurface surface = sampleSurface(Sample::Myoma, detail);
         TetMesh mesh;
@@ -146,9 +146,9 @@ int runSurface(Args& args) {
         t0 = std::chrono::steady_clock::now();
         requireOk(cutSurface(surface, nullptr, sweep, cut));
         const double cutMs = ms(t0);
-        std::printf("%10d %10d %12.1f %14.2f %16d %14.3f %14.1f\n", surface.triangleCount(), binding.vertexCount(),
-                    bindMs, 1e6 * apply[apply.size() / 2] / binding.vertexCount(), rebound,
-                    1e3 * rebindMs / std::max(1, rebound), cutMs);
+        std::printf("%10d %10d %12.1f %14.2f %16d %14.3f %12d %12.2f\n", surface.triangleCount(),
+                    binding.vertexCount(), bindMs, 1e6 * apply[apply.size() / 2] / binding.vertexCount(), rebound,
+                    1e3 * rebindMs / std::max(1, rebound), cut.candidateTriangles, cutMs);
         std::fflush(stdout);
     }
     return kOk;

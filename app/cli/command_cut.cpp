@@ -5,8 +5,7 @@
 #include "app/cli/cli_common.h"
 
 #include "core/cut/hybrid_cutter.h"
-#include "core/embed/binding.h"
-#include "core/embed/cut_surface.h"
+#include "core/embed/embedded_surface.h"
 #include "core/mesh/masses.h"
 #include "core/mesh/material.h"
 #include "scenario/mesh_io.h"
@@ -77,11 +76,11 @@ int runCut(Args args) {
         requireOk(readSweep(sweepFiles[i], sweeps[i]));
 
     // The embedded high-resolution surface (section 5), bound to the tets before any cut.
-    TriangleSurface surface;
-    SurfaceBinding binding;
+    EmbeddedSurface embedded;
     if (surfaceIn) {
+        TriangleSurface surface;
         requireOk(readSurface(*surfaceIn, surface));
-        requireOk(binding.bind(mesh, surface));
+        requireOk(embedded.bind(mesh, std::move(surface)));
     }
     int surfaceSplitEdges = 0, surfaceCapTriangles = 0;
 
@@ -90,20 +89,14 @@ int runCut(Args args) {
     HybridCutter cutter(mesh);
     CutStats total;
     for (std::size_t i = 0; i < sweeps.size(); ++i) {
-        std::vector<Vec3> surfacePositions;
-        if (surfaceIn)
-            binding.apply(mesh, surfacePositions);
+        embedded.update(mesh);  // the surface where the tets are before this cut
         CutResult result;
         if (Status s = cutter.cut(sweeps[i], options, result); !s.ok())
             throw CliError{kInternal, sweepFiles[i] + ": " + s.message()};
         if (surfaceIn) {
-            binding.rebind(mesh, result.changes, surfacePositions, sweeps[i]);
-            surface.positions = surfacePositions;
             SurfaceCut sc;
-            if (Status s = cutSurface(surface, nullptr, sweeps[i], sc); !s.ok())
+            if (Status s = embedded.cut(mesh, result.changes, sweeps[i], &sc); !s.ok())
                 throw CliError{kInternal, *surfaceIn + ": cutting the surface along " + sweepFiles[i] + ": " + s.message()};
-            binding.bindNewVertices(mesh, surface.positions, sc.firstNewVertex, sc.sourceEdge, sc.side, result.changes,
-                                    sweeps[i]);
             surfaceSplitEdges += sc.splitEdges;
             surfaceCapTriangles += sc.capTriangles;
         }
@@ -127,8 +120,8 @@ int runCut(Args args) {
     computeLumpedMasses(mesh, material.density);
     requireOk(writeVtu(out, mesh));
     if (surfaceIn) {
-        binding.apply(mesh, surface.positions);  // the surface deformed with the tets
-        requireOk(writeSurface(*surfaceOut, surface));
+        embedded.update(mesh);  // the surface deformed with the tets
+        requireOk(writeSurface(*surfaceOut, embedded.surface()));
     }
     const QJsonObject after = meshStatsJson(mesh, material);
 
@@ -151,8 +144,8 @@ int runCut(Args args) {
         if (surfaceIn)
             cut["surface"] = QJsonObject{{"split_edges", surfaceSplitEdges},
                                          {"cap_triangles", surfaceCapTriangles},
-                                         {"vertices", surface.vertexCount()},
-                                         {"triangles", surface.triangleCount()}};
+                                         {"vertices", embedded.surface().vertexCount()},
+                                         {"triangles", embedded.surface().triangleCount()}};
         QJsonObject r;
         r["method"] = QString::fromStdString(method);
         r["triangulation"] = QString::fromStdString(triangulation);

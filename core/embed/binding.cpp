@@ -54,6 +54,9 @@ Status SurfaceBinding::bind(const TetMesh& mesh, const TriangleSurface& surface)
     const int n = surface.vertexCount();
     m_tet.assign(n, -1);
     m_weights.assign(n, {1, 0, 0, 0});
+    // Headroom for vertices that cuts add (bindNewVertices), so that they append in place.
+    m_tet.reserve(n + n / 4 + 1024);
+    m_weights.reserve(n + n / 4 + 1024);
     m_outside = 0;
     TetGrid grid;
     grid.build(mesh);

@@ -30,14 +30,20 @@ struct SurfaceCut {
     int loops = 0;           ///< cut-boundary loops traced
     int capTriangles = 0;    ///< new triangles closing the cut, both sides together
     int firstNewVertex = 0;  ///< vertices from here on were created by the cut
+    int candidateTriangles = 0;  ///< triangles near the sweep whose edges were tested
     std::vector<Vec2> sweepUv;  ///< (u, v) on the sweep of every new vertex
     std::vector<std::array<int, 2>> sourceEdge;  ///< surface edge each new vertex was split from
     std::vector<int> side;      ///< side of the sweep of each new vertex (+1, -1; 0 if shared)
 };
 
-/// Cuts a closed, manifold, outward-oriented surface along the sweep. `rest` (optional) holds
-/// one reference position per vertex and is extended like the positions. On error nothing is
-/// changed. A surface the sweep misses is left unchanged (success, zero counts).
+/// Cuts a closed, manifold, outward-oriented surface along the sweep, in place: crossed
+/// triangles are replaced and new vertices and triangles appended (triangles the cut does not
+/// touch keep their index). `rest` (optional) holds one reference position per vertex and is
+/// extended like the positions; `surface.cutUvs` and `surface.cutFaces` are filled. Cost:
+/// one bounding-box pass over the index array, then in proportion to the triangles near the
+/// sweep (plus one pass over the triangles when cut loops overlap in (u, v), to tell pieces
+/// apart). On error nothing is changed. A surface the sweep misses is left unchanged
+/// (success, zero counts).
 Status cutSurface(TriangleSurface& surface, std::vector<Vec3>* rest, const SweepSurface& sweep, SurfaceCut& out);
 
 } // namespace resect

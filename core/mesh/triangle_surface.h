@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -16,9 +17,17 @@ struct TriangleSurface {
     std::vector<Vec3> positions;          ///< #V positions
     std::vector<Tri> triangles;           ///< #F triangles, counter-clockwise seen from outside
     std::vector<Eigen::Vector2d> uvs;     ///< empty, or #V texture coordinates
+    /// Cut faces (section 5.2), filled by cutSurface: empty, or #F flags, 1 for triangles
+    /// that close a cut (their texture comes from the sweep's (u, v), not from `uvs`).
+    std::vector<std::uint8_t> cutFaces;
+    /// Empty, or #V: the (u, v) on the sweep of every vertex a cut created (the texture
+    /// coordinates of cut faces); NaN for the other vertices. A vertex where two cuts cross
+    /// keeps the (u, v) of the later cut.
+    std::vector<Eigen::Vector2d> cutUvs;
 
     int vertexCount() const { return static_cast<int>(positions.size()); }
     int triangleCount() const { return static_cast<int>(triangles.size()); }
+    bool isCutFace(int f) const { return !cutFaces.empty() && cutFaces[f] != 0; }
 };
 
 /// Signed volume enclosed by a closed, outward-oriented surface (divergence theorem:

@@ -5,10 +5,13 @@
 // failed writes leave no file behind.
 
 #include "scenario/surface_io.h"
+#include "core/embed/cut_surface.h"
 
 #include "scenario_test_util.h"
 
 #include <QTemporaryDir>
+#include <assimp/Importer.hpp>
+#include <assimp/scene.h>
 #include <QtTest>
 
 #include <algorithm>
@@ -112,6 +115,7 @@ class TestSurfaceIo : public QObject {
 private slots:
     void roundTrip_data();
     void roundTrip();
+    void cutSurfacesKeepTheirSidesAndCutFaces();
     void readWeldsStlFacets();
     void readTriangulatesAndDropsLinesAndPoints();
     void readAppliesNodeTransforms();
@@ -177,6 +181,83 @@ void TestSurfaceIo::roundTrip() {
     const Status again = writeSurface(path.toStdString(), makeCube(false));
     QVERIFY2(again.ok(), again.message().c_str());
     QCOMPARE(entries(dir.path()), files);
+}
+
+/// A cube cut in two (section 5): OBJ keeps every vertex (the two sides' coincident copies
+/// stay apart) and writes cut faces in their own group with the sweep's (u, v); binary glTF
+/// holds the skin and the cut faces as two meshes, the cut one textured with (u, v).
+void TestSurfaceIo::cutSurfacesKeepTheirSidesAndCutFaces() {
+    TriangleSurface cube = makeCube(true);
+    SweepSurface sweep;
+    QVERIFY(SweepSurface::fromStartEnd({Vec3(0, -2, 4.1), Vec3(5, -2, 4.2)}, {Vec3(0, 3, 4.1), Vec3(5, 3, 4.2)}, sweep)
+                .ok());
+    SurfaceCut cut;
+    const Status c = cutSurface(cube, nullptr, sweep, cut);
+    QVERIFY2(c.ok(), c.message().c_str());
+    QVERIFY(cut.capTriangles > 0);
+    const int capCorners = [&] {
+        std::vector<int> v;
+        for (int f = 0; f < cube.triangleCount(); ++f)
+            if (cube.isCutFace(f))
+                v.insert(v.end(), cube.triangles[f].begin(), cube.triangles[f].end());
+        std::sort(v.begin(), v.end());
+        return int(std::unique(v.begin(), v.end()) - v.begin());
+    }();
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+
+    const QString obj = dir.filePath("cut.obj");
+    const Status w = writeSurface(obj.toStdString(), cube);
+    QVERIFY2(w.ok(), w.message().c_str());
+    int v = 0, vt = 0, f = 0, cutFaces = 0;
+    bool inCut = false;
+    for (const QByteArray& line : readBytes(obj).split('\n')) {
+        v += line.startsWith("v ");
+        vt += line.startsWith("vt ");
+        f += line.startsWith("f ");
+        if (line.startsWith("g "))
+            inCut = line == "g cut";
+        cutFaces += inCut && line.startsWith("f ");
+    }
+    QCOMPARE(v, cube.vertexCount());
+    QCOMPARE(vt, cube.vertexCount() + capCorners);
+    QCOMPARE(f, cube.triangleCount());
+    QCOMPARE(cutFaces, cut.capTriangles);
+    TriangleSurface back;
+    const Status r = readSurface(obj.toStdString(), back);
+    QVERIFY2(r.ok(), r.message().c_str());
+    QCOMPARE(back.triangleCount(), cube.triangleCount());
+    QVERIFY(std::abs(enclosedVolume(back) - 8.0) < 1e-5);
+
+    const QString glb = dir.filePath("cut.glb");
+    const Status g = writeSurface(glb.toStdString(), cube);
+    QVERIFY2(g.ok(), g.message().c_str());
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(glb.toStdString(), 0);
+    QVERIFY(scene);
+    QCOMPARE(scene->mNumMeshes, 2u);
+    const aiMesh* skin = scene->mMeshes[0];
+    const aiMesh* cap = scene->mMeshes[1];
+    if (cap->mNumFaces > skin->mNumFaces)
+        std::swap(skin, cap);  // the importer may reorder meshes
+    QCOMPARE(int(cap->mNumFaces), cut.capTriangles);
+    QCOMPARE(int(skin->mNumFaces), cube.triangleCount() - cut.capTriangles);
+    QVERIFY(cap->HasTextureCoords(0));
+    for (unsigned k = 0; k < cap->mNumFaces; ++k)
+        for (unsigned i = 0; i < 3; ++i) {
+            const unsigned idx = cap->mFaces[k].mIndices[i];
+            const aiVector3D p = cap->mVertices[idx];
+            const int original = findVertex(cube, Vec3(p.x, p.y, p.z));
+            QVERIFY(original < 0 || original >= cut.firstNewVertex);
+            // Both copies of a cut point share their (u, v): compare with the first found.
+            const Vec3 q(p.x, p.y, p.z);
+            for (int vtx = cut.firstNewVertex; vtx < cube.vertexCount(); ++vtx)
+                if ((cube.positions[vtx] - q).norm() < 1e-5) {
+                    const aiVector3D t = cap->mTextureCoords[0][idx];
+                    QVERIFY((Eigen::Vector2d(t.x, t.y) - cube.cutUvs[vtx]).norm() < 1e-5);
+                    break;
+                }
+        }
 }
 
 void TestSurfaceIo::readWeldsStlFacets() {

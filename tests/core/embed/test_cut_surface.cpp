@@ -7,6 +7,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <map>
 #include <numeric>
 
@@ -112,6 +113,7 @@ private slots:
         const SweepSurface sweep = planeSweep(centre, normal, size, bend, poses, partial);
         const double volume = enclosedVolume(s);
         std::vector<Vec3> rest = s.positions;
+        const std::vector<Tri> trianglesBefore = s.triangles;
         SurfaceCut cut;
         const Status st = cutSurface(s, &rest, sweep, cut);
         QVERIFY2(st.ok(), st.message().c_str());
@@ -139,6 +141,53 @@ private slots:
         QCOMPARE(int(rest.size()), s.vertexCount());
         if (shape == 2 && normal.z() > 0.5)
             QVERIFY(cut.loops >= 4);  // two circles a side: annulus caps
+        // In place: only crossed triangles (all among the candidates) changed, at their index.
+        int changed = 0;
+        for (std::size_t t = 0; t < trianglesBefore.size(); ++t)
+            changed += s.triangles[t] != trianglesBefore[t] ? 1 : 0;
+        QVERIFY(changed > 0);
+        QVERIFY(changed <= cut.candidateTriangles);
+        // Cut faces are flagged, and their texture coordinates are the sweep's (u, v).
+        QCOMPARE(int(s.cutFaces.size()), s.triangleCount());
+        QCOMPARE(int(s.cutUvs.size()), s.vertexCount());
+        QCOMPARE(int(std::count(s.cutFaces.begin(), s.cutFaces.end(), 1)), cut.capTriangles);
+        for (int f = 0; f < s.triangleCount(); ++f)
+            if (s.isCutFace(f))
+                for (int v : s.triangles[f]) {
+                    QVERIFY(v >= cut.firstNewVertex);
+                    QVERIFY(s.cutUvs[v].allFinite());
+                    QVERIFY((sweep.pointAt(s.cutUvs[v]) - s.positions[v]).norm() <= 1e-9 * size);
+                }
+        for (int v = 0; v < cut.firstNewVertex; ++v)
+            QVERIFY(!s.cutUvs[v].allFinite());
+    }
+
+    /// A surface with a hole (not closed): the cut boundary runs into the hole, the cut is
+    /// refused and the surface, its texture coordinates and rest positions are untouched.
+    void failedCutLeavesTheSurfaceUntouched() {
+        TriangleSurface s = makeEllipsoid(Vec3(10, 8, 6), 24, 32);
+        // Remove the triangles around the equator on the +x side.
+        std::vector<Tri> kept;
+        for (const Tri& t : s.triangles) {
+            const Vec3 c = (s.positions[t[0]] + s.positions[t[1]] + s.positions[t[2]]) / 3;
+            if (!(c.x() > 8 && std::abs(c.z()) < 1.5))
+                kept.push_back(t);
+        }
+        QVERIFY(kept.size() < s.triangles.size());
+        s.triangles = kept;
+        s.uvs.assign(s.positions.size(), Vec2(0.25, 0.5));
+        std::vector<Vec3> rest = s.positions;
+        const TriangleSurface before = s;
+        SurfaceCut cut;
+        const Status st = cutSurface(s, &rest, planeSweep(Vec3(0.01, 0.02, 0.03), Vec3(0, 0.05, 1), 30, 0, 2, false), cut);
+        QVERIFY(!st.ok());
+        QVERIFY2(st.message().find("open") != std::string::npos, st.message().c_str());
+        QCOMPARE(s.positions, before.positions);
+        QCOMPARE(s.triangles, before.triangles);
+        QCOMPARE(s.uvs, before.uvs);
+        QCOMPARE(s.cutUvs.size(), before.cutUvs.size());
+        QCOMPARE(s.cutFaces.size(), before.cutFaces.size());
+        QCOMPARE(rest, before.positions);
     }
 
     void repeatedIntersectingCuts() {

@@ -1,0 +1,46 @@
+#include "core/embed/embedded_surface.h"
+
+#include <limits>
+
+namespace resect {
+
+Status EmbeddedSurface::bind(const TetMesh& mesh, TriangleSurface surface) {
+    m_surface = {};
+    m_binding = {};
+    if (Status s = m_binding.bind(mesh, surface); !s.ok())
+        return s;
+    m_surface = std::move(surface);
+    // Cut-face data from the start, and headroom, so that cuts append without moving the
+    // whole surface (a cut then costs in proportion to what it touches, plus one bounding-box
+    // pass over the triangles; see cutSurface).
+    m_surface.cutUvs.resize(m_surface.positions.size(), Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
+    m_surface.cutFaces.resize(m_surface.triangles.size(), 0);
+    const auto headroom = [](auto& v) { v.reserve(v.size() + v.size() / 4 + 1024); };
+    headroom(m_surface.positions);
+    headroom(m_surface.uvs);
+    headroom(m_surface.cutUvs);
+    headroom(m_surface.triangles);
+    headroom(m_surface.cutFaces);
+    return Status::success();
+}
+
+void EmbeddedSurface::update(const TetMesh& mesh) {
+    if (!empty())
+        m_binding.apply(mesh, m_surface.positions);
+}
+
+Status EmbeddedSurface::cut(const TetMesh& mesh, const CutChanges& changes, const SweepSurface& sweep,
+                            SurfaceCut* stats) {
+    if (empty())
+        return Status::success();
+    m_binding.rebind(mesh, changes, m_surface.positions, sweep);
+    SurfaceCut cut;
+    if (Status s = cutSurface(m_surface, nullptr, sweep, cut); !s.ok())
+        return s;
+    m_binding.bindNewVertices(mesh, m_surface.positions, cut.firstNewVertex, cut.sourceEdge, cut.side, changes, sweep);
+    if (stats)
+        *stats = std::move(cut);
+    return Status::success();
+}
+
+} // namespace resect

@@ -1,0 +1,42 @@
+#pragma once
+// The embedded high-resolution surface as one object (section 5): the surface, its binding to
+// the tets and the cut that keeps both in step. Call update() whenever the tets moved (every
+// frame) and cut() right after each tet cut, with the cut's change list:
+//
+//     embedded.update(mesh);            // positions before the cut
+//     cutter.cut(sweep, options, result);
+//     embedded.cut(mesh, result.changes, sweep);
+//
+// cut() re-binds the vertices the tet cut touched (SurfaceBinding::rebind), cuts the surface
+// along the sweep and closes it (cutSurface), and binds the new vertices on their side
+// (SurfaceBinding::bindNewVertices).
+
+#include "core/embed/binding.h"
+#include "core/embed/cut_surface.h"
+
+namespace resect {
+
+class EmbeddedSurface {
+public:
+    /// Binds `surface` (positions in the mesh's current configuration). On error the object
+    /// is left empty.
+    Status bind(const TetMesh& mesh, TriangleSurface surface);
+
+    /// Moves every vertex with the tets (SurfaceBinding::apply).
+    void update(const TetMesh& mesh);
+
+    /// After a tet cut (see above). The surface's positions must be those update() gave
+    /// before the tet cut. On error the surface is unchanged (its binding may have been
+    /// refreshed for vertices the tet cut touched, which is still consistent).
+    Status cut(const TetMesh& mesh, const CutChanges& changes, const SweepSurface& sweep, SurfaceCut* stats = nullptr);
+
+    bool empty() const { return m_surface.triangles.empty(); }
+    const TriangleSurface& surface() const { return m_surface; }
+    const SurfaceBinding& binding() const { return m_binding; }
+
+private:
+    TriangleSurface m_surface;
+    SurfaceBinding m_binding;
+};
+
+} // namespace resect
