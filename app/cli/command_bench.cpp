@@ -5,8 +5,7 @@
 #include "app/cli/cli_common.h"
 
 #include "core/cut/hybrid_cutter.h"
-#include "core/embed/binding.h"
-#include "core/embed/cut_surface.h"
+#include "core/embed/embedded_surface.h"
 #include "core/mesh/box_mesh.h"
 #include "core/mesher/samples.h"
 #include "core/mesher/tetrahedralize.h"
@@ -108,8 +107,8 @@ int runSurface(Args& args) {
         }
     }
     args.finish();
-    std::printf("%10s %10s %12s %14s %16s %14s %12s %12s\n", "triangles", "vertices", "bind_ms", "apply_ns_vertex",
-                "rebound_vertices", "rebind_us_vtx", "near_tris", "surf_cut_ms");
+    std::printf("%10s %10s %12s %14s %16s %14s %12s %12s %12s\n", "triangles", "vertices", "bind_ms",
+                "apply_ns_vertex", "rebound_vertices", "rebind_us_vtx", "near_tris", "surf_cut_ms", "bind_new_ms");
     for (double detail : details) {
         TriangleSurface surface = sampleSurface(Sample::Myoma, detail);
         TetMesh mesh;
@@ -117,18 +116,18 @@ int runSurface(Args& args) {
         const auto ms = [](auto t0) {
             return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         };
-        SurfaceBinding binding;
+        EmbeddedSurface embedded;
         auto t0 = std::chrono::steady_clock::now();
-        requireOk(binding.bind(mesh, surface));
+        requireOk(embedded.bind(mesh, std::move(surface)));
         const double bindMs = ms(t0);
-        std::vector<Vec3> positions;
         std::vector<double> apply;
         for (int r = 0; r < 15; ++r) {
             t0 = std::chrono::steady_clock::now();
-            binding.apply(mesh, positions);
+            embedded.update(mesh);
             apply.push_back(ms(t0));
         }
         std::sort(apply.begin(), apply.end());
+        const int vertices = embedded.surface().vertexCount(), triangles = embedded.surface().triangleCount();
         const auto [lo, hi] = boundingBox(mesh.positions());
         const double z = 0.5 * (lo.z() + hi.z()) + 0.013;
         SweepSurface sweep;
@@ -138,17 +137,12 @@ int runSurface(Args& args) {
         HybridCutter cutter(mesh);
         CutResult result;
         requireOk(cutter.cut(sweep, CutOptions{}, result));
-        t0 = std::chrono::steady_clock::now();
-        const int rebound = binding.rebind(mesh, result.changes, positions, sweep);
-        const double rebindMs = ms(t0);
-        surface.positions = positions;
-        SurfaceCut cut;
-        t0 = std::chrono::steady_clock::now();
-        requireOk(cutSurface(surface, nullptr, sweep, cut));
-        const double cutMs = ms(t0);
-        std::printf("%10d %10d %12.1f %14.2f %16d %14.3f %12d %12.2f\n", surface.triangleCount(),
-                    binding.vertexCount(), bindMs, 1e6 * apply[apply.size() / 2] / binding.vertexCount(), rebound,
-                    1e3 * rebindMs / std::max(1, rebound), cut.candidateTriangles, cutMs);
+        EmbeddedCut cut;
+        requireOk(embedded.cut(mesh, result.changes, sweep, &cut));
+        std::printf("%10d %10d %12.1f %14.2f %16d %14.3f %12d %12.2f %12.2f\n", triangles, vertices, bindMs,
+                    1e6 * apply[apply.size() / 2] / vertices, cut.reboundVertices,
+                    1e3 * cut.rebindMs / std::max(1, cut.reboundVertices), cut.surface.candidateTriangles, cut.cutMs,
+                    cut.bindNewMs);
         std::fflush(stdout);
     }
     return kOk;

@@ -94,11 +94,11 @@ int runCut(Args args) {
         if (Status s = cutter.cut(sweeps[i], options, result); !s.ok())
             throw CliError{kInternal, sweepFiles[i] + ": " + s.message()};
         if (surfaceIn) {
-            SurfaceCut sc;
-            if (Status s = embedded.cut(mesh, result.changes, sweeps[i], &sc); !s.ok())
+            EmbeddedCut ec;
+            if (Status s = embedded.cut(mesh, result.changes, sweeps[i], &ec); !s.ok())
                 throw CliError{kInternal, *surfaceIn + ": cutting the surface along " + sweepFiles[i] + ": " + s.message()};
-            surfaceSplitEdges += sc.splitEdges;
-            surfaceCapTriangles += sc.capTriangles;
+            surfaceSplitEdges += ec.surface.splitEdges;
+            surfaceCapTriangles += ec.surface.capTriangles;
         }
         const CutStats& c = result.stats;
         total.cutEdges += c.cutEdges;

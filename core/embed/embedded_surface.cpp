@@ -1,5 +1,6 @@
 #include "core/embed/embedded_surface.h"
 
+#include <chrono>
 #include <limits>
 
 namespace resect {
@@ -30,16 +31,27 @@ void EmbeddedSurface::update(const TetMesh& mesh) {
 }
 
 Status EmbeddedSurface::cut(const TetMesh& mesh, const CutChanges& changes, const SweepSurface& sweep,
-                            SurfaceCut* stats) {
+                            EmbeddedCut* stats) {
     if (empty())
         return Status::success();
-    m_binding.rebind(mesh, changes, m_surface.positions, sweep);
-    SurfaceCut cut;
-    if (Status s = cutSurface(m_surface, nullptr, sweep, cut); !s.ok())
+    using Clock = std::chrono::steady_clock;
+    const auto ms = [](Clock::time_point t0) {
+        return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    };
+    EmbeddedCut c;
+    auto t0 = Clock::now();
+    c.reboundVertices = m_binding.rebind(mesh, changes, m_surface.positions, sweep);
+    c.rebindMs = ms(t0);
+    t0 = Clock::now();
+    if (Status s = cutSurface(m_surface, nullptr, sweep, c.surface); !s.ok())
         return s;
-    m_binding.bindNewVertices(mesh, m_surface.positions, cut.firstNewVertex, cut.sourceEdge, cut.side, changes, sweep);
+    c.cutMs = ms(t0);
+    t0 = Clock::now();
+    const SurfaceCut& sc = c.surface;
+    m_binding.bindNewVertices(mesh, m_surface.positions, sc.firstNewVertex, sc.sourceEdge, sc.side, changes, sweep);
+    c.bindNewMs = ms(t0);
     if (stats)
-        *stats = std::move(cut);
+        *stats = std::move(c);
     return Status::success();
 }
 

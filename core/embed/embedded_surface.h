@@ -16,6 +16,13 @@
 
 namespace resect {
 
+/// What EmbeddedSurface::cut did, with the time of each stage.
+struct EmbeddedCut {
+    SurfaceCut surface;      ///< the surface cut (section 5.1, 5.2)
+    int reboundVertices = 0; ///< vertices re-bound because the tet cut touched their tet
+    double rebindMs = 0, cutMs = 0, bindNewMs = 0;
+};
+
 class EmbeddedSurface {
 public:
     /// Binds `surface` (positions in the mesh's current configuration). On error the object
@@ -28,7 +35,7 @@ public:
     /// After a tet cut (see above). The surface's positions must be those update() gave
     /// before the tet cut. On error the surface is unchanged (its binding may have been
     /// refreshed for vertices the tet cut touched, which is still consistent).
-    Status cut(const TetMesh& mesh, const CutChanges& changes, const SweepSurface& sweep, SurfaceCut* stats = nullptr);
+    Status cut(const TetMesh& mesh, const CutChanges& changes, const SweepSurface& sweep, EmbeddedCut* stats = nullptr);
 
     bool empty() const { return m_surface.triangles.empty(); }
     const TriangleSurface& surface() const { return m_surface; }
