@@ -3,6 +3,7 @@
 // re-binding keeps the surface in place while each side follows its own piece.
 #include "core/cut/hybrid_cutter.h"
 #include "core/embed/binding.h"
+#include "core/embed/embedded_surface.h"
 #include "core/embed/cut_surface.h"
 #include "core/mesh/topology.h"
 #include "core/mesher/samples.h"
@@ -97,8 +98,8 @@ private slots:
         // The whole section-5 pipeline: cut the tets, re-bind, cut and close the surface, bind
         // its new vertices; then each closed surface piece follows its own tet piece.
         Scene s = sample(Sample::Polyp, 1.0);
-        SurfaceBinding binding;
-        QVERIFY(binding.bind(s.mesh, s.surface).ok());
+        EmbeddedSurface embedded;
+        QVERIFY(embedded.bind(s.mesh, s.surface).ok());
         const auto [lo, hi] = boundingBox(s.mesh.positions());
         const double z = lo.z() + 0.62 * (hi.z() - lo.z());
         SweepSurface sweep;
@@ -106,24 +107,24 @@ private slots:
                                            {Vec3(lo.x() - 5, hi.y() + 5, z + 0.2), Vec3(hi.x() + 5, hi.y() + 5, z + 0.5)},
                                            sweep)
                     .ok());
-        std::vector<Vec3> positions;
-        binding.apply(s.mesh, positions);
+        embedded.update(s.mesh);
         HybridCutter cutter(s.mesh);
         CutOptions options;
         options.snap = true;
         options.relaxSteps = 5;
         CutResult r;
         QVERIFY(cutter.cut(sweep, options, r).ok());
-        binding.rebind(s.mesh, r.changes, positions, sweep);
-        TriangleSurface cutSurf = s.surface;
-        cutSurf.positions = positions;
-        SurfaceCut sc;
-        QVERIFY(cutSurface(cutSurf, nullptr, sweep, sc).ok());
+        EmbeddedCut ec;
+        QVERIFY(embedded.cut(s.mesh, r.changes, sweep, &ec).ok());
+        const SurfaceCut& sc = ec.surface;
         QVERIFY(sc.capTriangles > 0);
-        binding.bindNewVertices(s.mesh, cutSurf.positions, sc.firstNewVertex, sc.sourceEdge, sc.side, r.changes, sweep);
-        QCOMPARE(binding.vertexCount(), cutSurf.vertexCount());
-        std::vector<Vec3> after;
-        binding.apply(s.mesh, after);
+        QVERIFY(ec.reboundVertices > 0);
+        const TriangleSurface cutSurf = embedded.surface();
+        QCOMPARE(embedded.binding().vertexCount(), cutSurf.vertexCount());
+        // Re-applying the binding reproduces the cut surface: every vertex (old, re-bound and
+        // new) has its tet and coordinates.
+        embedded.update(s.mesh);
+        std::vector<Vec3> after = embedded.surface().positions;
         const double tol = 1e-9 * size(s.surface);
         for (int v = 0; v < cutSurf.vertexCount(); ++v)
             QVERIFY2((after[v] - cutSurf.positions[v]).norm() <= tol, qPrintable(QString::number(v)));
@@ -131,7 +132,8 @@ private slots:
         // go with it, the others stay; vertices within d of the sweep are the cut's business.
         const Vec3 lift(0, 0, 10);
         QVERIFY(liftUpperPiece(s.mesh, z + 3, lift));
-        binding.apply(s.mesh, after);
+        embedded.update(s.mesh);
+        after = embedded.surface().positions;
         int newMoved = 0, newChecked = 0;
         for (int v = sc.firstNewVertex; v < cutSurf.vertexCount(); ++v) {
             const int side = sc.side[v - sc.firstNewVertex];
