@@ -21,6 +21,7 @@ dict=()
 [[ -f fuzz/dict/$target.dict ]] && dict=(-dict=fuzz/dict/$target.dict)
 export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/fuzz/lsan.supp:print_suppressions=0}
 exec "$exe" "$work" "fuzz/corpus/$target" "${dict[@]}" \
   -artifact_prefix="$artifacts/" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
   -print_final_stats=1 "$@"
