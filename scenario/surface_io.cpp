@@ -25,6 +25,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -169,19 +170,42 @@ Status repairPrimitiveTypes(const std::string& path, const aiScene& scene) {
     return Status::success();
 }
 
+/// True if assimp might read the file as PLY, judged from its first bytes. assimp 5.2 takes
+/// a file as PLY when "ply" occurs in its first 200 bytes and its first line starts with
+/// "ply" in any case, but it skips a first line that begins with a line-end character ('\0',
+/// '\r', '\n', '\f'): so the test here is wider, any line that starts in the first 256 bytes
+/// and begins, after blanks, with "ply" in any case.
+bool mayBeReadAsPly(std::string_view head) {
+    const auto isLineEnd = [](char c) { return c == '\n' || c == '\r' || c == '\0' || c == '\f'; };
+    const auto lower = [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); };
+    constexpr std::size_t kLookAhead = 256;
+    for (std::size_t line = 0; line < head.size() && line < kLookAhead;) {
+        std::size_t i = line;
+        while (i < head.size() && (head[i] == ' ' || head[i] == '\t' || head[i] == '\v'))
+            ++i;
+        if (head.size() - i >= 3 && lower(head[i]) == 'p' && lower(head[i + 1]) == 'l' &&
+            lower(head[i + 2]) == 'y')
+            return true;
+        while (i < head.size() && !isLineEnd(head[i]))
+            ++i;
+        line = i + 1;
+    }
+    return false;
+}
+
 /// assimp 5.2's PLY reader loops forever on a header without "end_header" (a truncated
-/// file): check PLY files for it first. The header is ASCII in every PLY variant.
+/// file): check every file it might read as PLY for that line first. The header is ASCII
+/// in every PLY variant.
 Status checkPlyHeader(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
-    std::string head(3, '\0');
-    if (!in.read(head.data(), 3) || head != "ply")
-        return Status::success(); // not a PLY file: assimp decides
     // The header declares elements and properties line by line; this is far more than any
     // real header needs.
     constexpr std::size_t kMaxHeaderBytes = 1 << 20;
     std::string header(kMaxHeaderBytes, '\0');
     in.read(header.data(), static_cast<std::streamsize>(header.size()));
     header.resize(static_cast<std::size_t>(in.gcount()));
+    if (!mayBeReadAsPly(header))
+        return Status::success(); // not a PLY file: assimp decides
     // A line that is "end_header", possibly followed by blanks (assimp's own test).
     for (std::size_t at = header.find("\nend_header"); at != std::string::npos;
          at = header.find("\nend_header", at + 1)) {
@@ -192,10 +216,59 @@ Status checkPlyHeader(const std::string& path) {
     return Status::error(path + ": damaged PLY file (its header has no end_header line)");
 }
 
+/// assimp 5.2's OFF reader allocates (and initialises) its vertex and face arrays from the
+/// counts in the header before reading them, so a few bytes declaring 2e9 vertices make it
+/// allocate tens of gigabytes. For a file with the .off extension or an OFF keyword (OFF,
+/// COFF, NOFF, STOFF, 4OFF, nOFF, ...) as its first token, the first three numbers after the
+/// keyword and any '#' comment lines (dimension and counts) must each be at most the file's
+/// size in bytes: every vertex or face takes several bytes.
+Status checkOffCounts(const std::string& path) {
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (ec)
+        return Status::error(path + ": cannot read its size (" + ec.message() + ")");
+    // The keyword and the counts come first; comments before them are short.
+    std::string text(64 * 1024, '\0');
+    std::ifstream in(path, std::ios::binary);
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    std::vector<std::string_view> tokens;
+    detail::LineReader lines(text);
+    std::string_view line;
+    bool keyword = false;
+    while (tokens.size() < 4 && lines.nextContent(line, '#')) {
+        std::vector<std::string_view> more;
+        detail::splitTokens(line, more);
+        tokens.insert(tokens.end(), more.begin(), more.end());
+    }
+    if (!tokens.empty()) {
+        std::string first(tokens.front());
+        std::transform(first.begin(), first.end(), first.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        keyword = first.size() >= 3 && first.size() <= 6 &&
+                  first.compare(first.size() - 3, 3, "off") == 0;
+    }
+    if (!keyword && lowerExtension(path) != ".off")
+        return Status::success();
+    const std::size_t firstNumber = keyword ? 1 : 0;
+    for (std::size_t i = firstNumber; i < tokens.size() && i < firstNumber + 3; ++i) {
+        std::int64_t count = 0;
+        if (!detail::parseInt64(tokens[i], count))
+            break; // not a number: assimp reports what is wrong
+        if (count < 0 || static_cast<std::uintmax_t>(count) > size)
+            return Status::error(path + ": damaged OFF file (its header declares " +
+                                 std::string(tokens[i]) + " vertices or faces, more than a file of " +
+                                 std::to_string(size) + " bytes can hold)");
+    }
+    return Status::success();
+}
+
 Status readSurfaceImpl(const std::string& path, TriangleSurface& out) {
     if (Status s = detail::checkRegularFile(path); !s)
         return s;
     if (Status s = checkPlyHeader(path); !s)
+        return s;
+    if (Status s = checkOffCounts(path); !s)
         return s;
     Assimp::Importer importer;
     const auto failure = [&] {
