@@ -17,6 +17,11 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -263,12 +268,58 @@ Status checkOffCounts(const std::string& path) {
     return Status::success();
 }
 
+/// The JSON of a glTF file: the whole file for text glTF (first non-blank byte '{'), the
+/// first chunk for binary glTF ("glTF" magic, then a 12-byte header; chunk: uint32 length,
+/// "JSON", data). Empty if it is neither.
+QByteArray gltfJson(const QByteArray& file) {
+    if (file.startsWith("glTF")) {
+        if (file.size() < 20 || file.mid(16, 4) != "JSON")
+            return {};
+        std::uint32_t length = 0;
+        for (int k = 3; k >= 0; --k)
+            length = (length << 8) | static_cast<unsigned char>(file[12 + k]);
+        return file.mid(20, static_cast<qsizetype>(std::min<std::uint64_t>(length, file.size() - 20)));
+    }
+    const QByteArray trimmed = file.left(64).trimmed();
+    return trimmed.startsWith('{') ? file : QByteArray();
+}
+
+/// assimp 5.2's glTF 2 reader dereferences a null vertex array for a LINE_LOOP primitive
+/// without positions (killing the process with SIGSEGV). A primitive without a POSITION
+/// attribute has nothing to read anyway: reject every glTF file (text or binary, whatever
+/// its extension, since assimp recognises glTF by content too) that has one.
+Status checkGltfPrimitives(const std::string& path) {
+    QFile file(QString::fromStdString(path));
+    if (!file.open(QIODevice::ReadOnly))
+        return Status::success(); // assimp reports it
+    const QByteArray head = file.peek(64);
+    if (!head.startsWith("glTF") && !head.trimmed().startsWith('{'))
+        return Status::success();
+    const QByteArray json = gltfJson(file.readAll());
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(json, &error);
+    if (error.error != QJsonParseError::NoError || !doc.isObject())
+        return Status::success(); // not glTF JSON: assimp decides
+    const QJsonArray meshes = doc.object().value("meshes").toArray();
+    for (qsizetype m = 0; m < meshes.size(); ++m) {
+        const QJsonArray primitives = meshes[m].toObject().value("primitives").toArray();
+        for (qsizetype p = 0; p < primitives.size(); ++p)
+            if (!primitives[p].toObject().value("attributes").toObject().contains("POSITION"))
+                return Status::error(path + ": glTF meshes[" + std::to_string(m) +
+                                     "].primitives[" + std::to_string(p) +
+                                     "] has no POSITION attribute");
+    }
+    return Status::success();
+}
+
 Status readSurfaceImpl(const std::string& path, TriangleSurface& out) {
     if (Status s = detail::checkRegularFile(path); !s)
         return s;
     if (Status s = checkPlyHeader(path); !s)
         return s;
     if (Status s = checkOffCounts(path); !s)
+        return s;
+    if (Status s = checkGltfPrimitives(path); !s)
         return s;
     Assimp::Importer importer;
     const auto failure = [&] {
