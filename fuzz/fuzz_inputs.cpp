@@ -68,7 +68,8 @@ const std::string& scratchDir() {
 std::string writeScratchFile(const std::string& name, std::span<const std::uint8_t> bytes) {
     const std::string path = (std::filesystem::path(scratchDir()) / name).string();
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    out.write(reinterpret_cast<const char*>(bytes.data()),
+              static_cast<std::streamsize>(bytes.size()));
     out.close();
     if (scratchDir().empty() || !out) {
         std::fprintf(stderr, "fuzz harness: cannot write %s\n", path.c_str());

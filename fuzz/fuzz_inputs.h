@@ -82,6 +82,6 @@ std::string checkSurface(const TriangleSurface& surface);
 } // namespace resect::fuzz
 
 /// Defines fuzz target `name` (an identifier) run by `function`.
-#define RESECT_FUZZ_TARGET(name, function)                                                     \
-    [[maybe_unused]] static const bool resect_fuzz_target_##name =                             \
+#define RESECT_FUZZ_TARGET(name, function)                                                         \
+    [[maybe_unused]] static const bool resect_fuzz_target_##name =                                 \
         ::resect::fuzz::registerTarget(#name, function)

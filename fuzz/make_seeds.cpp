@@ -112,8 +112,7 @@ QByteArray inlineGltf(const TriangleSurface& surface) {
     if (!m.hasMatch())
         return {};
     const QByteArray bin = readBytes(dir.filePath(m.captured(1)));
-    gltf.replace(m.captured(1).toUtf8(),
-                 "data:application/octet-stream;base64," + bin.toBase64());
+    gltf.replace(m.captured(1).toUtf8(), "data:application/octet-stream;base64," + bin.toBase64());
     return gltf;
 }
 
@@ -133,9 +132,8 @@ int main(int argc, char** argv) {
 
     // Sweeps: the paper's two-curve case and three poses.
     SweepSurface two, three;
-    ok &= check(SweepSurface::fromCurves({{{0, 0, 0.5}, {1, 0, 0.5}},
-                                          {{0, 1, 0.5}, {1, 1, 0.5}}},
-                                         two));
+    ok &= check(
+        SweepSurface::fromCurves({{{0, 0, 0.5}, {1, 0, 0.5}}, {{0, 1, 0.5}, {1, 1, 0.5}}}, two));
     ok &= check(SweepSurface::fromCurves({{{0, 0, 0}, {0.5, 0, 0.1}, {1, 0, 0}},
                                           {{0, 1, 0}, {0.5, 1, 0.2}, {1, 1, 0}},
                                           {{0, 2, 0.5}, {0.5, 2, 0.5}, {1, 2, 0.5}}},
@@ -146,8 +144,8 @@ int main(int argc, char** argv) {
     // Tet meshes.
     const TetMesh box = makeBoxTetMesh({0, 0, 0}, {1, 1, 1}, 1, 1, 1);
     ok &= check(writeVtu(file("vtu", "box.vtu").toStdString(), box));
-    const TetMesh one = TetMesh::fromArrays({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
-                                            {{0, 1, 2, 3}});
+    const TetMesh one =
+        TetMesh::fromArrays({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{0, 1, 2, 3}});
     const QByteArray ascii = asciiVtu(one);
     ok &= !ascii.isEmpty() && writeBytes(file("vtu", "one-tet-ascii.vtu"), ascii);
     ok &= writeBytes(file("msh", "two-tets.msh"), kGmsh);
@@ -160,9 +158,8 @@ int main(int argc, char** argv) {
         cube.uvs.emplace_back(p.x() + 0.5 * p.z(), p.y());
     for (const char* ext : {"obj", "stl", "ply", "off", "glb"}) {
         const std::string target = std::string("surface_") + ext;
-        ok &= check(writeSurface(file(target.c_str(), (std::string("cube.") + ext).c_str())
-                                     .toStdString(),
-                                 cube));
+        ok &= check(writeSurface(
+            file(target.c_str(), (std::string("cube.") + ext).c_str()).toStdString(), cube));
     }
     const QByteArray gltf = inlineGltf(cube);
     ok &= !gltf.isEmpty() && writeBytes(file("surface_gltf", "cube.gltf"), gltf);

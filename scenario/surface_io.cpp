@@ -182,7 +182,9 @@ Status repairPrimitiveTypes(const std::string& path, const aiScene& scene) {
 /// and begins, after blanks, with "ply" in any case.
 bool mayBeReadAsPly(std::string_view head) {
     const auto isLineEnd = [](char c) { return c == '\n' || c == '\r' || c == '\0' || c == '\f'; };
-    const auto lower = [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); };
+    const auto lower = [](char c) {
+        return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    };
     constexpr std::size_t kLookAhead = 256;
     for (std::size_t line = 0; line < head.size() && line < kLookAhead;) {
         std::size_t i = line;
@@ -211,11 +213,15 @@ Status checkPlyHeader(const std::string& path) {
     header.resize(static_cast<std::size_t>(in.gcount()));
     if (!mayBeReadAsPly(header))
         return Status::success(); // not a PLY file: assimp decides
-    // A line that is "end_header", possibly followed by blanks (assimp's own test).
+    // A line that starts with "end_header" followed by a blank or a line end, the
+    // characters assimp's own test accepts (not '\v', with which it hangs too).
+    const auto ends = [](char c) {
+        return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\0' || c == '\f';
+    };
     for (std::size_t at = header.find("\nend_header"); at != std::string::npos;
          at = header.find("\nend_header", at + 1)) {
         const std::size_t after = at + 11;
-        if (after == header.size() || std::isspace(static_cast<unsigned char>(header[after])))
+        if (after == header.size() || ends(header[after]))
             return Status::success();
     }
     return Status::error(path + ": damaged PLY file (its header has no end_header line)");
@@ -223,10 +229,13 @@ Status checkPlyHeader(const std::string& path) {
 
 /// assimp 5.2's OFF reader allocates (and initialises) its vertex and face arrays from the
 /// counts in the header before reading them, so a few bytes declaring 2e9 vertices make it
-/// allocate tens of gigabytes. For a file with the .off extension or an OFF keyword (OFF,
-/// COFF, NOFF, STOFF, 4OFF, nOFF, ...) as its first token, the first three numbers after the
-/// keyword and any '#' comment lines (dimension and counts) must each be at most the file's
-/// size in bytes: every vertex or face takes several bytes.
+/// allocate tens of gigabytes. It reads the counts with a loose parser: digits up to the
+/// first other character, the keyword (OFF, COFF, NOFF, STOFF, 4OFF, nOFF, ...) optional and
+/// not necessarily followed by a blank. So for a file with the .off extension or a first
+/// token that holds "off" within its first six characters, the first three numbers after
+/// the keyword and any '#' comment lines (dimension and counts, each read as the leading
+/// digits of a token) must each be at most the file's size in bytes: every vertex or face
+/// takes several bytes.
 Status checkOffCounts(const std::string& path) {
     std::error_code ec;
     const std::uintmax_t size = fs::file_size(path, ec);
@@ -240,30 +249,40 @@ Status checkOffCounts(const std::string& path) {
     std::vector<std::string_view> tokens;
     detail::LineReader lines(text);
     std::string_view line;
-    bool keyword = false;
     while (tokens.size() < 4 && lines.nextContent(line, '#')) {
         std::vector<std::string_view> more;
         detail::splitTokens(line, more);
         tokens.insert(tokens.end(), more.begin(), more.end());
     }
+    bool keyword = false;
     if (!tokens.empty()) {
-        std::string first(tokens.front());
+        std::string first(tokens.front().substr(0, 6));
         std::transform(first.begin(), first.end(), first.begin(),
                        [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        keyword = first.size() >= 3 && first.size() <= 6 &&
-                  first.compare(first.size() - 3, 3, "off") == 0;
+        if (const std::size_t at = first.find("off"); at != std::string::npos) {
+            keyword = true;
+            tokens.front().remove_prefix(at + 3); // numbers may follow the keyword directly
+            if (tokens.front().empty())
+                tokens.erase(tokens.begin());
+        }
     }
     if (!keyword && lowerExtension(path) != ".off")
         return Status::success();
-    const std::size_t firstNumber = keyword ? 1 : 0;
-    for (std::size_t i = firstNumber; i < tokens.size() && i < firstNumber + 3; ++i) {
-        std::int64_t count = 0;
-        if (!detail::parseInt64(tokens[i], count))
+    for (std::size_t i = 0; i < tokens.size() && i < 3; ++i) {
+        std::uintmax_t count = 0;
+        std::size_t digits = 0;
+        for (; digits < tokens[i].size() && tokens[i][digits] >= '0' && tokens[i][digits] <= '9';
+             ++digits)
+            count = std::min<std::uintmax_t>(count * 10 +
+                                                 static_cast<unsigned>(tokens[i][digits] - '0'),
+                                             std::uintmax_t(1) << 62);
+        if (digits == 0)
             break; // not a number: assimp reports what is wrong
-        if (count < 0 || static_cast<std::uintmax_t>(count) > size)
+        if (count > size)
             return Status::error(path + ": damaged OFF file (its header declares " +
-                                 std::string(tokens[i]) + " vertices or faces, more than a file of " +
-                                 std::to_string(size) + " bytes can hold)");
+                                 std::string(tokens[i].substr(0, digits)) +
+                                 " vertices or faces, more than a file of " + std::to_string(size) +
+                                 " bytes can hold)");
     }
     return Status::success();
 }
@@ -278,7 +297,8 @@ QByteArray gltfJson(const QByteArray& file) {
         std::uint32_t length = 0;
         for (int k = 3; k >= 0; --k)
             length = (length << 8) | static_cast<unsigned char>(file[12 + k]);
-        return file.mid(20, static_cast<qsizetype>(std::min<std::uint64_t>(length, file.size() - 20)));
+        return file.mid(20,
+                        static_cast<qsizetype>(std::min<std::uint64_t>(length, file.size() - 20)));
     }
     const QByteArray trimmed = file.left(64).trimmed();
     return trimmed.startsWith('{') ? file : QByteArray();
@@ -305,9 +325,8 @@ Status checkGltfPrimitives(const std::string& path) {
         const QJsonArray primitives = meshes[m].toObject().value("primitives").toArray();
         for (qsizetype p = 0; p < primitives.size(); ++p)
             if (!primitives[p].toObject().value("attributes").toObject().contains("POSITION"))
-                return Status::error(path + ": glTF meshes[" + std::to_string(m) +
-                                     "].primitives[" + std::to_string(p) +
-                                     "] has no POSITION attribute");
+                return Status::error(path + ": glTF meshes[" + std::to_string(m) + "].primitives[" +
+                                     std::to_string(p) + "] has no POSITION attribute");
     }
     return Status::success();
 }
@@ -446,7 +465,8 @@ Status writeObj(const std::string& path, const TriangleSurface& surface, const s
             if (surface.isCutFace(f))
                 for (int v : surface.triangles[f])
                     if (cutVt[v] == 0 && surface.cutUvs[v].allFinite()) {
-                        os << "vt " << surface.cutUvs[v].x() << ' ' << surface.cutUvs[v].y() << '\n';
+                        os << "vt " << surface.cutUvs[v].x() << ' ' << surface.cutUvs[v].y()
+                           << '\n';
                         cutVt[v] = nextVt++;
                     }
     const auto face = [&](const Tri& t, bool cut) {
@@ -559,7 +579,8 @@ Status checkWritable(const std::string& path, const TriangleSurface& surface) {
     if (!surface.cutFaces.empty() && surface.cutFaces.size() != surface.triangles.size())
         return Status::error(path + ": the surface's cut-face flags do not match its triangles");
     if (!surface.cutUvs.empty() && surface.cutUvs.size() != surface.positions.size())
-        return Status::error(path + ": the surface's cut-face texture coordinates do not match its vertices");
+        return Status::error(
+            path + ": the surface's cut-face texture coordinates do not match its vertices");
     const auto n = static_cast<int>(surface.positions.size());
     for (std::size_t f = 0; f < surface.triangles.size(); ++f)
         for (int v : surface.triangles[f])

@@ -23,12 +23,24 @@ Outcome readAs(const char* fileName, std::span<const std::uint8_t> input) {
     return Outcome::accepted();
 }
 
-Outcome objInput(std::span<const std::uint8_t> input) { return readAs("fuzz.obj", input); }
-Outcome stlInput(std::span<const std::uint8_t> input) { return readAs("fuzz.stl", input); }
-Outcome plyInput(std::span<const std::uint8_t> input) { return readAs("fuzz.ply", input); }
-Outcome offInput(std::span<const std::uint8_t> input) { return readAs("fuzz.off", input); }
-Outcome gltfInput(std::span<const std::uint8_t> input) { return readAs("fuzz.gltf", input); }
-Outcome glbInput(std::span<const std::uint8_t> input) { return readAs("fuzz.glb", input); }
+Outcome objInput(std::span<const std::uint8_t> input) {
+    return readAs("fuzz.obj", input);
+}
+Outcome stlInput(std::span<const std::uint8_t> input) {
+    return readAs("fuzz.stl", input);
+}
+Outcome plyInput(std::span<const std::uint8_t> input) {
+    return readAs("fuzz.ply", input);
+}
+Outcome offInput(std::span<const std::uint8_t> input) {
+    return readAs("fuzz.off", input);
+}
+Outcome gltfInput(std::span<const std::uint8_t> input) {
+    return readAs("fuzz.gltf", input);
+}
+Outcome glbInput(std::span<const std::uint8_t> input) {
+    return readAs("fuzz.glb", input);
+}
 
 } // namespace
 
