@@ -22,6 +22,7 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
@@ -87,6 +88,26 @@ const char* const kTetGen = R"(# five points
 1 1 2 3 4
 2 2 3 4 5
 )";
+
+// A binary little-endian PLY tetrahedron: float coordinates, faces as uchar-counted int lists.
+QByteArray binaryPly() {
+    QByteArray b("ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n"
+                 "property float y\nproperty float z\nelement face 4\n"
+                 "property list uchar int vertex_indices\nend_header\n");
+    const auto put = [&](const void* p, int n) { b.append(static_cast<const char*>(p), n); };
+    const float v[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (const auto& p : v)
+        for (float c : p)
+            put(&c, 4); // x86_64 is little-endian
+    const std::int32_t f[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    for (const auto& t : f) {
+        const unsigned char three = 3;
+        put(&three, 1);
+        for (std::int32_t i : t)
+            put(&i, 4);
+    }
+    return b;
+}
 
 // A VTK ASCII file with one tet: the smallest .vtu VTK reads.
 QByteArray asciiVtu(const TetMesh& mesh) {
@@ -161,6 +182,7 @@ int main(int argc, char** argv) {
         ok &= check(writeSurface(
             file(target.c_str(), (std::string("cube.") + ext).c_str()).toStdString(), cube));
     }
+    ok &= writeBytes(file("surface_ply", "tet-binary.ply"), binaryPly());
     const QByteArray gltf = inlineGltf(cube);
     ok &= !gltf.isEmpty() && writeBytes(file("surface_gltf", "cube.gltf"), gltf);
     return ok ? 0 : 1;

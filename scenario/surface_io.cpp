@@ -9,6 +9,7 @@
 
 #include "scenario/surface_io.h"
 
+#include "scenario/assimp_guard.h"
 #include "scenario/atomic_file.h"
 #include "scenario/mesh_io_detail.h"
 
@@ -16,11 +17,6 @@
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-
-#include <QFile>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
 
 #include <algorithm>
 #include <cctype>
@@ -30,7 +26,6 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -175,170 +170,10 @@ Status repairPrimitiveTypes(const std::string& path, const aiScene& scene) {
     return Status::success();
 }
 
-/// True if assimp might read the file as PLY, judged from its first bytes. assimp 5.2 takes
-/// a file as PLY when "ply" occurs in its first 200 bytes and its first line starts with
-/// "ply" in any case, but it skips a first line that begins with a line-end character ('\0',
-/// '\r', '\n', '\f'): so the test here is wider, any line that starts in the first 256 bytes
-/// and begins, after blanks, with "ply" in any case.
-bool mayBeReadAsPly(std::string_view head) {
-    const auto isLineEnd = [](char c) { return c == '\n' || c == '\r' || c == '\0' || c == '\f'; };
-    const auto lower = [](char c) {
-        return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    };
-    constexpr std::size_t kLookAhead = 256;
-    for (std::size_t line = 0; line < head.size() && line < kLookAhead;) {
-        std::size_t i = line;
-        while (i < head.size() && (head[i] == ' ' || head[i] == '\t' || head[i] == '\v'))
-            ++i;
-        if (head.size() - i >= 3 && lower(head[i]) == 'p' && lower(head[i + 1]) == 'l' &&
-            lower(head[i + 2]) == 'y')
-            return true;
-        while (i < head.size() && !isLineEnd(head[i]))
-            ++i;
-        line = i + 1;
-    }
-    return false;
-}
-
-/// assimp 5.2's PLY reader loops forever on a header without "end_header" (a truncated
-/// file): check every file it might read as PLY for that line first. The header is ASCII
-/// in every PLY variant.
-Status checkPlyHeader(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    // The header declares elements and properties line by line; this is far more than any
-    // real header needs.
-    constexpr std::size_t kMaxHeaderBytes = 1 << 20;
-    std::string header(kMaxHeaderBytes, '\0');
-    in.read(header.data(), static_cast<std::streamsize>(header.size()));
-    header.resize(static_cast<std::size_t>(in.gcount()));
-    if (!mayBeReadAsPly(header))
-        return Status::success(); // not a PLY file: assimp decides
-    // A line that starts with "end_header" followed by a blank or a line end, the
-    // characters assimp's own test accepts (not '\v', with which it hangs too).
-    const auto ends = [](char c) {
-        return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\0' || c == '\f';
-    };
-    for (std::size_t at = header.find("\nend_header"); at != std::string::npos;
-         at = header.find("\nend_header", at + 1)) {
-        const std::size_t after = at + 11;
-        if (after == header.size() || ends(header[after]))
-            return Status::success();
-    }
-    return Status::error(path + ": damaged PLY file (its header has no end_header line)");
-}
-
-/// assimp 5.2's OFF reader allocates (and initialises) its vertex and face arrays from the
-/// counts in the header before reading them, so a few bytes declaring 2e9 vertices make it
-/// allocate tens of gigabytes. It reads the counts with a loose parser: digits up to the
-/// first other character, the keyword (OFF, COFF, NOFF, STOFF, 4OFF, nOFF, ...) optional and
-/// not necessarily followed by a blank. So for a file with the .off extension or a first
-/// token that holds "off" within its first six characters, the first three numbers after
-/// the keyword and any '#' comment lines (dimension and counts, each read as the leading
-/// digits of a token) must each be at most the file's size in bytes: every vertex or face
-/// takes several bytes.
-Status checkOffCounts(const std::string& path) {
-    std::error_code ec;
-    const std::uintmax_t size = fs::file_size(path, ec);
-    if (ec)
-        return Status::error(path + ": cannot read its size (" + ec.message() + ")");
-    // The keyword and the counts come first; comments before them are short.
-    std::string text(64 * 1024, '\0');
-    std::ifstream in(path, std::ios::binary);
-    in.read(text.data(), static_cast<std::streamsize>(text.size()));
-    text.resize(static_cast<std::size_t>(in.gcount()));
-    std::vector<std::string_view> tokens;
-    detail::LineReader lines(text);
-    std::string_view line;
-    while (tokens.size() < 4 && lines.nextContent(line, '#')) {
-        std::vector<std::string_view> more;
-        detail::splitTokens(line, more);
-        tokens.insert(tokens.end(), more.begin(), more.end());
-    }
-    bool keyword = false;
-    if (!tokens.empty()) {
-        std::string first(tokens.front().substr(0, 6));
-        std::transform(first.begin(), first.end(), first.begin(),
-                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        if (const std::size_t at = first.find("off"); at != std::string::npos) {
-            keyword = true;
-            tokens.front().remove_prefix(at + 3); // numbers may follow the keyword directly
-            if (tokens.front().empty())
-                tokens.erase(tokens.begin());
-        }
-    }
-    if (!keyword && lowerExtension(path) != ".off")
-        return Status::success();
-    for (std::size_t i = 0; i < tokens.size() && i < 3; ++i) {
-        std::uintmax_t count = 0;
-        std::size_t digits = 0;
-        for (; digits < tokens[i].size() && tokens[i][digits] >= '0' && tokens[i][digits] <= '9';
-             ++digits)
-            count = std::min<std::uintmax_t>(count * 10 +
-                                                 static_cast<unsigned>(tokens[i][digits] - '0'),
-                                             std::uintmax_t(1) << 62);
-        if (digits == 0)
-            break; // not a number: assimp reports what is wrong
-        if (count > size)
-            return Status::error(path + ": damaged OFF file (its header declares " +
-                                 std::string(tokens[i].substr(0, digits)) +
-                                 " vertices or faces, more than a file of " + std::to_string(size) +
-                                 " bytes can hold)");
-    }
-    return Status::success();
-}
-
-/// The JSON of a glTF file: the whole file for text glTF (first non-blank byte '{'), the
-/// first chunk for binary glTF ("glTF" magic, then a 12-byte header; chunk: uint32 length,
-/// "JSON", data). Empty if it is neither.
-QByteArray gltfJson(const QByteArray& file) {
-    if (file.startsWith("glTF")) {
-        if (file.size() < 20 || file.mid(16, 4) != "JSON")
-            return {};
-        std::uint32_t length = 0;
-        for (int k = 3; k >= 0; --k)
-            length = (length << 8) | static_cast<unsigned char>(file[12 + k]);
-        return file.mid(20,
-                        static_cast<qsizetype>(std::min<std::uint64_t>(length, file.size() - 20)));
-    }
-    const QByteArray trimmed = file.left(64).trimmed();
-    return trimmed.startsWith('{') ? file : QByteArray();
-}
-
-/// assimp 5.2's glTF 2 reader dereferences a null vertex array for a LINE_LOOP primitive
-/// without positions (killing the process with SIGSEGV). A primitive without a POSITION
-/// attribute has nothing to read anyway: reject every glTF file (text or binary, whatever
-/// its extension, since assimp recognises glTF by content too) that has one.
-Status checkGltfPrimitives(const std::string& path) {
-    QFile file(QString::fromStdString(path));
-    if (!file.open(QIODevice::ReadOnly))
-        return Status::success(); // assimp reports it
-    const QByteArray head = file.peek(64);
-    if (!head.startsWith("glTF") && !head.trimmed().startsWith('{'))
-        return Status::success();
-    const QByteArray json = gltfJson(file.readAll());
-    QJsonParseError error;
-    const QJsonDocument doc = QJsonDocument::fromJson(json, &error);
-    if (error.error != QJsonParseError::NoError || !doc.isObject())
-        return Status::success(); // not glTF JSON: assimp decides
-    const QJsonArray meshes = doc.object().value("meshes").toArray();
-    for (qsizetype m = 0; m < meshes.size(); ++m) {
-        const QJsonArray primitives = meshes[m].toObject().value("primitives").toArray();
-        for (qsizetype p = 0; p < primitives.size(); ++p)
-            if (!primitives[p].toObject().value("attributes").toObject().contains("POSITION"))
-                return Status::error(path + ": glTF meshes[" + std::to_string(m) + "].primitives[" +
-                                     std::to_string(p) + "] has no POSITION attribute");
-    }
-    return Status::success();
-}
-
 Status readSurfaceImpl(const std::string& path, TriangleSurface& out) {
     if (Status s = detail::checkRegularFile(path); !s)
         return s;
-    if (Status s = checkPlyHeader(path); !s)
-        return s;
-    if (Status s = checkOffCounts(path); !s)
-        return s;
-    if (Status s = checkGltfPrimitives(path); !s)
+    if (Status s = detail::checkAssimpInput(path); !s)
         return s;
     Assimp::Importer importer;
     const auto failure = [&] {
