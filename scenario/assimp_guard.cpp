@@ -218,15 +218,20 @@ Status checkPly(const std::string& path) {
         splitTokens(line, tok);
         if (tok.size() >= 2 && tok[0] == "format") {
             format = tok[1];
-        } else if (tok.size() >= 3 && tok[0] == "element") {
+        } else if (!tok.empty() && tok[0] == "element") {
+            // assimp's own parse of this line is loose: a count glued to the name is taken
+            // as the count too. So no number on the line may exceed the file size.
+            for (std::size_t k = 1; k < tok.size(); ++k) {
+                std::uint64_t n = 0;
+                if (leadingCount(tok[k], n) && n > file.size())
+                    return damaged("an element declares " + quoted(tok[k]) +
+                                   " items, more than a file of " + std::to_string(file.size()) +
+                                   " bytes can hold");
+            }
             PlyElement e;
+            if (tok.size() < 3 || !leadingCount(tok[2], e.count))
+                return damaged("an element line is not \"element NAME COUNT\"");
             e.name = quoted(tok[1]);
-            if (!leadingCount(tok[2], e.count))
-                return Status::success(); // assimp reports the bad count
-            if (e.count > file.size())
-                return damaged("element " + e.name + " declares " + quoted(tok[2]) +
-                               " items, more than a file of " + std::to_string(file.size()) +
-                               " bytes can hold");
             elements.push_back(std::move(e));
         } else if (tok.size() >= 3 && tok[0] == "property" && !elements.empty()) {
             PlyProperty p;
