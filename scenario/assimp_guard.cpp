@@ -22,11 +22,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// True if assimp might read the file as PLY, judged from its first bytes. assimp 5.2 takes
-/// a file as PLY when "ply" occurs in its first 200 bytes and its first line starts with
-/// "ply" in any case, but it skips a first line that begins with a line-end character ('\0',
-/// '\r', '\n', '\f'): so the test here is wider, any line that starts in the first 256 bytes
-/// and begins, after blanks, with "ply" in any case.
+// ---------------------------------------------------------------------------------------
+// PLY (http://paulbourke.net/dataformats/ply/): "ply", "format ascii|binary_little_endian|
+// binary_big_endian 1.0", then "element NAME COUNT" lines, each followed by its properties,
+// "property TYPE NAME" or "property list COUNT_TYPE ITEM_TYPE NAME", then "end_header".
+
+/// True if assimp might read the file as PLY, judged from its first bytes. assimp 5.2 checks
+/// that the first line starts with "ply" in any case, but its line reader skips a first line
+/// that begins with a line-end character ('\0', '\r', '\n', '\f'; seen in
+/// tests/fuzz_regressions/surface_ply/hang-truncated-header-after-junk-line.ply). The test
+/// here is wider: any line that starts in the first 256 bytes and begins, after blanks,
+/// with "ply" in any case.
 bool mayBeReadAsPly(std::string_view head) {
     const auto isLineEnd = [](char c) { return c == '\n' || c == '\r' || c == '\0' || c == '\f'; };
     const auto lower = [](char c) {
@@ -46,11 +52,6 @@ bool mayBeReadAsPly(std::string_view head) {
     }
     return false;
 }
-
-// ---------------------------------------------------------------------------------------
-// PLY (http://paulbourke.net/dataformats/ply/): "ply", "format ascii|binary_little_endian|
-// binary_big_endian 1.0", then "element NAME COUNT" lines, each followed by its properties,
-// "property TYPE NAME" or "property list COUNT_TYPE ITEM_TYPE NAME", then "end_header".
 
 /// Bytes of a PLY scalar type; 0 if unknown.
 int plyTypeSize(std::string_view type) {
