@@ -1,0 +1,34 @@
+#pragma once
+// Fork-join parallelism for the simulation kernels (OpenMP when the build has it, else serial).
+//
+// Work is always split into `threads` contiguous chunks with a fixed partition, and partial
+// sums are combined in thread order, so a result depends only on the thread count, never on
+// scheduling: the same input and thread count give bit-identical results.
+
+#include <cstdint>
+#include <functional>
+
+namespace resect {
+
+/// `requested` if > 0, else the OpenMP default (the number of cores). Always 1 without OpenMP.
+int resolveThreadCount(int requested);
+
+/// Chunk t of [0, count) split into `threads` parts: [count * t / threads, count * (t+1) / threads).
+inline std::int64_t chunkBegin(std::int64_t count, int threads, int t) {
+    return count * t / threads;
+}
+
+/// Runs body(t) on `threads` threads, t = 0 .. threads-1 (inline when threads == 1).
+/// `threads` must come from resolveThreadCount.
+/// body may call parallelBarrier() to synchronise all threads of this call.
+void parallelRun(int threads, const std::function<void(int)>& body);
+
+/// A barrier across the threads of the enclosing parallelRun (no-op outside one).
+void parallelBarrier();
+
+/// body(begin, end) on `threads` contiguous chunks of [0, count); returns the sum of the
+/// chunks' results in chunk order (deterministic for a given thread count).
+double parallelSum(int threads, std::int64_t count,
+                   const std::function<double(std::int64_t, std::int64_t)>& body);
+
+} // namespace resect
