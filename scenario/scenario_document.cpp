@@ -2,6 +2,7 @@
 
 #include <QJsonArray>
 
+#include <cmath>
 #include <filesystem>
 
 namespace resect {
@@ -101,7 +102,12 @@ QJsonObject expectationJson(const Expectation& e) {
         break;
     case ExpectationKind::PiecesAtLeast:
     case ExpectationKind::MaxInvertedTets:
-        o["value"] = static_cast<qint64>(e.value);
+        // Counts are written as integers; anything else (only from code, never from a
+        // loaded file) is written as it is, for validation to report.
+        if (std::abs(e.value) <= 1e15 && e.value == std::floor(e.value))
+            o["value"] = static_cast<qint64>(e.value);
+        else
+            o["value"] = e.value;
         break;
     default:
         o["value"] = e.value;

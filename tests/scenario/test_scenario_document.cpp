@@ -25,6 +25,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <random>
 #include <unistd.h>
 
@@ -770,6 +771,14 @@ void TestScenarioDocument::saveIsAtomic() {
     QVERIFY2(QString::fromStdString(st.message()).contains(file), st.message().c_str());
     QCOMPARE(readBytes(file), QByteArray("previous contents"));
     QCOMPARE(entries(dir.path()), before);
+
+    // Values no file can hold (set in code) are refused too.
+    Scenario nan = s;
+    nan.tissues[0].material.density = std::numeric_limits<double>::quiet_NaN();
+    nan.expectations[0].value = std::numeric_limits<double>::infinity();
+    nan.tool.curve[0].x() = std::numeric_limits<double>::quiet_NaN();
+    QVERIFY(!saveScenario(file.toStdString(), nan).ok());
+    QCOMPARE(readBytes(file), QByteArray("previous contents"));
 
     // Neither a missing folder nor a folder as the target loses anything.
     QVERIFY(!saveScenario(dir.filePath("no/such/folder/case.json").toStdString(), s).ok());
