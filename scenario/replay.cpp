@@ -11,6 +11,8 @@
 namespace resect {
 namespace {
 
+constexpr double kToolContactMargin = 0.8;
+
 /// The tool's points at time t of a stroke: linear between the two nearest samples.
 std::vector<Vec3> toolAt(const ReplayStroke& s, double t) {
     if (t <= s.times.front())
@@ -79,7 +81,12 @@ Status replay(ReplayPlan plan, ReplayOutcome& out, const ReplayProgress& progres
     const auto simulate = [&](double span, const std::function<std::vector<Vec3>(double)>& pose) -> Status {
         if (span <= 0 || diverged)
             return Status::success();
-        const double dt = sim.timeStep();
+        // The stable estimate holds for small deformations; a tool pushing surface nodes by
+        // projection deforms small elements strongly within a step, so an explicit
+        // integrator at "stable" keeps the margin the simulator advises (0.8).
+        double dt = sim.timeStep();
+        if (plan.simulation.dt <= 0 && tool && isExplicit(plan.simulation.integrator))
+            dt *= kToolContactMargin;
         if (!(dt > 0) || !std::isfinite(dt))
             return Status::error("the simulation has no usable time step");
         const long long steps = static_cast<long long>(std::ceil(span / dt - 1e-9));

@@ -10,6 +10,10 @@
 // Between strokes and after the last one the tool is withdrawn (moved above the tissue by
 // twice the tissue's size). After all strokes the simulation runs for `duration` seconds.
 //
+// Time step: the plan's, or the stable explicit step; with tool contact and an explicit
+// integrator, 0.8 times it (the stable estimate holds for small deformations, and the tool's
+// projection deforms the small elements next to a cut strongly within one step).
+//
 // Outcome. `pieces` are the tet mesh's connected components; the resected volume fraction is
 // the reference volume of the pieces holding no anchored node over the total (with no
 // anchored nodes: all pieces but the largest); `inverted` counts tets with non-positive

@@ -58,6 +58,8 @@ int runMesh(Args args);
 int runDemo(Args args);
 int runCut(Args args);
 int runTable1(Args args);
+int runRun(Args args);
+int runExport(Args args);
 int runBench(Args args);
 
 } // namespace resect::cli

@@ -26,6 +26,12 @@ commands:
                                     hybrid snaps and relaxes (10 steps) unless told not to
   table1 [--sample polyp|myoma ...] [--d 0.2] [--out TABLE.md]
                                     the paper's Table 1 on the built-in samples
+  run SCENARIO.json [--report R.json]
+                                    replay the scenario's strokes, cuts and simulation and
+                                    check its expectations (exit 3 if one fails)
+  export SCENARIO.json --out DIR [--force]
+                                    a self-contained trainer package (meshes, glTF surfaces,
+                                    the expert's result, manifest with SHA-256)
   bench cut-scaling [--sizes 10000,100000,1000000] [--repeats 7] [--out scaling.csv]
                                     the same local cut on meshes of growing size
   bench surface [--details 1,5]     embedded surface: bind, apply, re-bind, cut (myoma
@@ -57,6 +63,10 @@ int main(int argc, char** argv) {
             return runCut(Args(args));
         if (command == "table1")
             return runTable1(Args(args));
+        if (command == "run")
+            return runRun(Args(args));
+        if (command == "export")
+            return runExport(Args(args));
         if (command == "bench")
             return runBench(Args(args));
         throw CliError{kBadInput, "unknown command '" + command + "' (try resect --help)"};
