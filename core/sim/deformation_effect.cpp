@@ -20,8 +20,12 @@ std::vector<std::int64_t> splits(std::int64_t count, int threads) {
 DeformationEffect::DeformationEffect(const TetMesh& mesh, const Material& material,
                                      const DeformationOptions& options)
     : m_mesh(mesh), m_material(material), m_model(mesh, material, options.terms),
-      m_threads(resolveThreadCount(options.threads)) {
+      m_threads(1) {
     const auto& terms = m_model.terms();
+    const std::int64_t work = static_cast<std::int64_t>(m_model.edges().size()) +
+                              static_cast<std::int64_t>(m_model.tetRestVolume().size()) +
+                              static_cast<std::int64_t>(m_model.triangles().size());
+    m_threads = threadsFor(resolveThreadCount(options.threads), work, options.grain);
     m_edgeSplit = splits(static_cast<std::int64_t>(m_model.edges().size()), m_threads);
     m_tetSplit = splits(terms.volume ? mesh.tetCount() : 0, m_threads);
     m_triSplit = splits(static_cast<std::int64_t>(m_model.triangles().size()), m_threads);

@@ -46,6 +46,7 @@ struct SimulatorOptions {
     Integrator integrator = Integrator::SymplecticEuler;
     double dt = 0;     ///< s; 0: the stable explicit time step (stableTimeStep())
     int threads = 0;   ///< 0: resolveThreadCount's default
+    int grain = 4096;  ///< fewer threads when one would get fewer nodes or terms (parallel.h)
     double explosionFactor = 100;
     bool keepLastGoodState = true;  ///< back up the state in every step (see above)
     BackwardEulerOptions implicit;
@@ -74,8 +75,8 @@ public:
     Simulator(const Simulator&) = delete;
     Simulator& operator=(const Simulator&) = delete;
 
-    /// Builds the named effect (EffectRegistry) and adds it. settings.threads 0 means the
-    /// simulator's thread count.
+    /// Builds the named effect (EffectRegistry) and adds it, with the simulator's threads and
+    /// grain (settings.threads and settings.grain are overridden).
     Status addEffect(const std::string& name, EffectSettings settings = {},
                      const EffectRegistry& registry = EffectRegistry::withBuiltins());
     /// Adds an effect; it runs by its phase, then in the order added.
@@ -114,6 +115,8 @@ public:
     int stepsTaken() const { return m_steps; }
     double time() const { return m_time; }
     int threads() const { return m_threads; }
+    /// Threads of the node passes for the current node count.
+    int nodeThreads() const;
     const SimulatorOptions& options() const { return m_options; }
     TetMesh& mesh() { return m_mesh; }
 

@@ -62,7 +62,7 @@ private slots:
         QFETCH(int, threads);
         TetMesh m = simBox(2, 2, 2, 0.2, 3);
         perturb(m, 0.15);
-        DeformationEffect e(m, Material{}, {only(terms), threads});
+        DeformationEffect e(m, Material{}, {only(terms), threads, 1});  // grain 1: really threaded
         std::vector<Vec3> x(m.positions().begin(), m.positions().end());
         const std::vector<Vec3> f = forcesAt(e, x);
         const double scale = maxNorm(f);
@@ -116,7 +116,7 @@ private slots:
     void differentialIsSymmetricNegativeSemiDefinite() {
         TetMesh m = simBox(3, 2, 2, 0.2, 5);
         perturb(m, 0.3);
-        DeformationEffect e(m, Material{}, {only("all"), 2});
+        DeformationEffect e(m, Material{}, {only("all"), 2, 1});
         SimState s;
         s.x = m.positions();
         std::vector<Vec3> a(m.nodeCount()), b(m.nodeCount());
