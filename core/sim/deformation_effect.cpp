@@ -23,7 +23,7 @@ DeformationEffect::DeformationEffect(const TetMesh& mesh, const Material& materi
       m_threads(1) {
     const auto& terms = m_model.terms();
     const std::int64_t work = static_cast<std::int64_t>(m_model.edges().size()) +
-                              static_cast<std::int64_t>(m_model.tetRestVolume().size()) +
+                              static_cast<std::int64_t>(m_model.tetRestVolume6().size()) +
                               static_cast<std::int64_t>(m_model.triangles().size());
     m_threads = threadsFor(resolveThreadCount(options.threads), work, options.grain);
     m_edgeSplit = splits(static_cast<std::int64_t>(m_model.edges().size()), m_threads);
@@ -51,7 +51,7 @@ DeformationEffect::Chunk DeformationEffect::chunk(int t) const {
     };
     Chunk c;
     c.edges = range(m_edgeSplit, static_cast<std::int64_t>(m_model.edges().size()));
-    c.tets = range(m_tetSplit, static_cast<std::int64_t>(m_model.tetRestVolume().size()));
+    c.tets = range(m_tetSplit, static_cast<std::int64_t>(m_model.tetRestVolume6().size()));
     c.triangles = range(m_triSplit, static_cast<std::int64_t>(m_model.triangles().size()));
     return c;
 }
@@ -120,8 +120,8 @@ double DeformationEffect::addForces(const SimState& s, std::span<Vec3> f) {
         if (c.tets.end > c.tets.begin) {
             const auto n = static_cast<std::size_t>(c.tets.end - c.tets.begin);
             e += addVolumeForces(tets.subspan(c.tets.begin, n),
-                                 m.tetRestVolume().subspan(c.tets.begin, n),
-                                 m.tetStiffness().subspan(c.tets.begin, n), s.x, w);
+                                 m.tetRestVolume6().subspan(c.tets.begin, n),
+                                 m.tetStiffness36().subspan(c.tets.begin, n), s.x, w);
         }
         if (c.triangles.end > c.triangles.begin) {
             const auto n = static_cast<std::size_t>(c.triangles.end - c.triangles.begin);
@@ -147,7 +147,7 @@ void DeformationEffect::addForceDifferential(const SimState& s, std::span<const 
         if (c.tets.end > c.tets.begin) {
             const auto n = static_cast<std::size_t>(c.tets.end - c.tets.begin);
             addVolumeForceDifferential(tets.subspan(c.tets.begin, n),
-                                       m.tetStiffness().subspan(c.tets.begin, n), s.x, dx, w);
+                                       m.tetStiffness36().subspan(c.tets.begin, n), s.x, dx, w);
         }
         if (c.triangles.end > c.triangles.begin) {
             const auto n = static_cast<std::size_t>(c.triangles.end - c.triangles.begin);
@@ -174,7 +174,7 @@ void DeformationEffect::addSystemDiagonal(const SimState& s, double h, std::span
         if (c.tets.end > c.tets.begin) {
             const auto n = static_cast<std::size_t>(c.tets.end - c.tets.begin);
             addVolumeStiffnessDiagonal(tets.subspan(c.tets.begin, n),
-                                       m.tetStiffness().subspan(c.tets.begin, n), s.x, w);
+                                       m.tetStiffness36().subspan(c.tets.begin, n), s.x, w);
         }
         if (c.triangles.end > c.triangles.begin) {
             const auto n = static_cast<std::size_t>(c.triangles.end - c.triangles.begin);
