@@ -133,7 +133,7 @@ SimState Simulator::state(double h) {
 void Simulator::ensureBuffers() {
     const auto n = static_cast<std::size_t>(m_mesh.nodeCount());
     if (m_force.size() != n) {
-        m_force.resize(n, Vec3::Zero());
+        m_force.resize(n, Vec3::Zero());  // new entries zero: m_forceZero stays true
         m_forcesValid = false;
     }
     if (m_options.keepLastGoodState) {
@@ -151,8 +151,9 @@ void Simulator::constrainAll(std::span<Vec3> v, bool timed) {
     }
 }
 
-double Simulator::evaluateForces(const SimState& s, std::span<Vec3> f) {
-    zero(f, nodeThreads());
+double Simulator::evaluateForces(const SimState& s, std::span<Vec3> f, bool zeroed) {
+    if (!zeroed)
+        zero(f, nodeThreads());
     double potential = 0;
     for (std::size_t i = 0; i < m_effects.size(); ++i) {
         const auto t0 = Clock::now();
@@ -181,7 +182,8 @@ Status Simulator::implicitStep(const SimState& s, double h, NodePass& pass, doub
     const auto n = static_cast<std::size_t>(m_mesh.nodeCount());
     for (auto* b : {&m_rhs, &m_dv, &m_diag, &m_tmp, &m_kd, &m_dd})
         b->resize(n);
-    potential = evaluateForces(s, m_force);
+    potential = evaluateForces(s, m_force, m_forceZero);
+    m_forceZero = false;
 
     // b = h (f + h K v), constrained.
     std::fill(m_kd.begin(), m_kd.end(), Vec3::Zero());
@@ -247,8 +249,9 @@ Status Simulator::step(double h) {
     if (m_needReference) {
         // Energy reference for divergence detection (see simulator.h).
         const double kinetic = kineticEnergy();
-        m_forcePotential = evaluateForces(s, m_force);
+        m_forcePotential = evaluateForces(s, m_force, m_forceZero);
         m_forcesValid = true;
+        m_forceZero = false;
         m_referenceEnergy = kinetic + m_forcePotential;
         double totalMass = 0;
         for (double m : m_mesh.masses())
@@ -263,11 +266,13 @@ Status Simulator::step(double h) {
     double potential = 0;
     switch (m_options.integrator) {
     case Integrator::SymplecticEuler:
-        potential = evaluateForces(s, m_force);
+        potential = evaluateForces(s, m_force, m_forceZero);
         pass = symplecticEulerUpdate(s.x, s.v, m_force, s.mass, h, m_backupX, m_backupV, nodeThreads());
         m_forcesValid = false;
+        m_forceZero = true;
         break;
     case Integrator::VelocityVerlet: {
+        m_forceZero = false;
         if (!m_forcesValid)
             m_forcePotential = evaluateForces(s, m_force);
         const NodePass drift = verletKickDrift(s.x, s.v, m_force, s.mass, h, m_backupX, m_backupV, nodeThreads());

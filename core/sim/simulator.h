@@ -122,7 +122,8 @@ public:
 
 private:
     SimState state(double h);
-    double evaluateForces(const SimState& s, std::span<Vec3> f);
+    /// f = the effects' forces; f must be zero already if `zeroed`.
+    double evaluateForces(const SimState& s, std::span<Vec3> f, bool zeroed = false);
     void constrainAll(std::span<Vec3> v, bool timed);
     Status implicitStep(const SimState& s, double h, NodePass& pass, double& potential);
     void ensureBuffers();
@@ -143,6 +144,7 @@ private:
     std::vector<Vec3> m_force, m_backupX, m_backupV;
     std::vector<Vec3> m_rhs, m_dv, m_diag, m_tmp, m_kd, m_dd;
     bool m_forcesValid = false;   ///< m_force holds the forces at the current state (Verlet)
+    bool m_forceZero = false;     ///< m_force is all zero (left so by symplectic Euler)
     double m_forcePotential = 0;  ///< potential energy of m_force's evaluation
     bool m_needReference = true;
     double m_referenceEnergy = 0, m_energyScale = 0;
