@@ -88,8 +88,9 @@ template <class Kernel> double DeformationEffect::run(std::span<Vec3> out, Kerne
             w = ForceWindow{own.buffer, own.lo};
         }
         partial[t] = kernel(w, chunk(t));
-        parallelBarrier();
-        // Thread t adds the windows of threads 1.. into its share of the nodes, in order.
+    });
+    // Then chunk t of the nodes adds the windows of threads 1.. into the output, in order.
+    parallelRun(m_threads, [&](int t) {
         const std::int64_t begin = chunkBegin(nodes, m_threads, t);
         const std::int64_t end = chunkBegin(nodes, m_threads, t + 1);
         for (int u = 1; u < m_threads; ++u) {

@@ -62,7 +62,7 @@ private slots:
         QFETCH(double, dtFactor);
         TetMesh m = simBox(5, 4, 3, 0.3, 4);
         auto sim = deformable(m, integrator, dtFactor, 2);
-        for (int s = 0; s < 1000; ++s)
+        for (int s = 0; s < 300; ++s)
             QVERIFY(sim->step().ok());
         for (int i = 0; i < m.nodeCount(); ++i) {
             QVERIFY(m.pos(i) == m.ref(i));
@@ -220,7 +220,7 @@ private slots:
             TetMesh m = stretchedBox(0.01, 6);
             auto sim = deformable(m, Integrator::SymplecticEuler, 1.0, threads);
             QVERIFY(sim->addEffect("gravity").ok());
-            for (int s = 0; s < 100; ++s) {
+            for (int s = 0; s < 30; ++s) {
                 const Status st = sim->step();
                 QVERIFY2(st.ok(), st.message().c_str());
             }
