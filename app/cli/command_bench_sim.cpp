@@ -18,6 +18,8 @@
 #include <random>
 #include <sstream>
 
+#include <time.h>
+
 namespace resect::cli {
 namespace {
 
@@ -39,6 +41,13 @@ std::vector<int> parseList(Args& args, const std::string& name, std::vector<int>
     if (values.empty())
         badInput(name + ": empty list");
     return values;
+}
+
+/// CPU time of the whole process (all threads), ms.
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
 }
 
 /// n^3 unit cubes of six tets, a box as close to `tets` as a cube allows, slightly deformed.
@@ -69,10 +78,13 @@ int runBenchSim(Args& args) {
         dt = 0.8 * probe.stableTimeStep();
     }
     std::printf("explicit step (symplectic Euler; deformation: distance, volume, area), dt = %.4g s\n", dt);
-    std::printf("(per step: the fastest and the median wall time; on a machine shared with other work the\n"
-                " fastest is the better measure of the code, the median of what to expect)\n");
-    std::printf("%10s %10s %10s %8s %8s %10s %10s %12s %12s %14s %10s\n", "tets", "nodes", "edges", "threads",
-                "steps", "min_ms", "median_ms", "ns_tet_min", "ns_tet_med", "deformation_ms", "other_ms");
+    std::printf("per step: the fastest and the median wall time, and the process CPU time divided by the\n"
+                "threads (cpu_ms; what the wall time would be on an idle machine if the threads share the\n"
+                "work evenly; run with OMP_WAIT_POLICY=passive so that waiting threads do not spin).\n"
+                "deformation_ms and other_ms: mean wall time in the deformation effect and outside it.\n");
+    std::printf("%10s %10s %10s %8s %7s %9s %10s %9s %11s %11s %11s %15s %9s\n", "tets", "nodes", "edges",
+                "threads", "steps", "min_ms", "median_ms", "cpu_ms", "ns_tet_min", "ns_tet_med", "ns_tet_cpu",
+                "deformation_ms", "other_ms");
     for (int target : sizes) {
         TetMesh base = benchMesh(target);
         for (int threads : threadCounts) {
@@ -89,6 +101,7 @@ int runBenchSim(Args& args) {
                     throw CliError{kInternal, st.message()};
             std::vector<double> ms;
             double deformation = 0;
+            const double cpu0 = processCpuMs();
             for (int s = 0; s < n; ++s) {
                 const auto t0 = std::chrono::steady_clock::now();
                 if (Status st = sim.step(); !st.ok())
@@ -96,6 +109,7 @@ int runBenchSim(Args& args) {
                 ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
                 deformation += sim.lastStep().effects[0].ms;
             }
+            const double cpu = (processCpuMs() - cpu0) / n / sim.threads();
             std::sort(ms.begin(), ms.end());
             const double median = ms[ms.size() / 2];
             double mean = 0;
@@ -103,10 +117,10 @@ int runBenchSim(Args& args) {
                 mean += v;
             mean /= static_cast<double>(ms.size());
             deformation /= n;  // mean per step, like other_ms
-            std::printf("%10d %10d %10d %8d %8d %10.3f %10.3f %12.2f %12.2f %14.3f %10.3f\n", mesh.tetCount(),
-                        mesh.nodeCount(), edges, sim.threads(), n, ms.front(), median,
-                        1e6 * ms.front() / mesh.tetCount(), 1e6 * median / mesh.tetCount(), deformation,
-                        mean - deformation);
+            std::printf("%10d %10d %10d %8d %7d %9.3f %10.3f %9.3f %11.2f %11.2f %11.2f %15.3f %9.3f\n",
+                        mesh.tetCount(), mesh.nodeCount(), edges, sim.threads(), n, ms.front(), median, cpu,
+                        1e6 * ms.front() / mesh.tetCount(), 1e6 * median / mesh.tetCount(),
+                        1e6 * cpu / mesh.tetCount(), deformation, mean - deformation);
             std::fflush(stdout);
         }
     }

@@ -40,7 +40,7 @@ inline AreaGradient areaGradient(const Vec3& p0, const Vec3& p1, const Vec3& p2)
     AreaGradient r;
     r.area = 0.5 * n2;  // restTriangleArea
     r.defined = n2 > 0;
-    const Vec3 h = r.defined ? Vec3(n / (2 * n2)) : Vec3::Zero();
+    const Vec3 h = r.defined ? Vec3(n * (0.5 / n2)) : Vec3::Zero();  // one division, not three
     r.a0 = h.cross(p2 - p1);
     r.a1 = h.cross(p0 - p2);
     r.a2 = h.cross(p1 - p0);
