@@ -5,7 +5,8 @@
 namespace resect {
 
 double DampingEffect::addForces(const SimState& s, std::span<Vec3> f) {
-    parallelSum(m_threads, static_cast<std::int64_t>(f.size()),
+    parallelSum(threadsFor(m_threads, static_cast<std::int64_t>(f.size()), m_grain),
+                       static_cast<std::int64_t>(f.size()),
                 [&](std::int64_t begin, std::int64_t end) {
                     for (std::int64_t i = begin; i < end; ++i)
                         f[i] -= m_c * s.mass[i] * s.v[i];

@@ -10,8 +10,8 @@ namespace resect {
 
 class DampingEffect : public Effect {
 public:
-    explicit DampingEffect(double coefficient, int threads = 1)
-        : m_c(coefficient), m_threads(threads) {}
+    explicit DampingEffect(double coefficient, int threads = 1, int grain = 4096)
+        : m_c(coefficient), m_threads(threads), m_grain(grain) {}
     std::string name() const override { return "damping"; }
     double addForces(const SimState& s, std::span<Vec3> f) override;
     void addVelocityDifferential(const SimState& s, std::span<const Vec3> dv,
@@ -22,6 +22,7 @@ public:
 private:
     double m_c;
     int m_threads;
+    int m_grain;
 };
 
 } // namespace resect

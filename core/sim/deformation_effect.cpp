@@ -20,8 +20,12 @@ std::vector<std::int64_t> splits(std::int64_t count, int threads) {
 DeformationEffect::DeformationEffect(const TetMesh& mesh, const Material& material,
                                      const DeformationOptions& options)
     : m_mesh(mesh), m_material(material), m_model(mesh, material, options.terms),
-      m_threads(resolveThreadCount(options.threads)) {
+      m_threads(1) {
     const auto& terms = m_model.terms();
+    const std::int64_t work = static_cast<std::int64_t>(m_model.edges().size()) +
+                              static_cast<std::int64_t>(m_model.tetRestVolume6().size()) +
+                              static_cast<std::int64_t>(m_model.triangles().size());
+    m_threads = threadsFor(resolveThreadCount(options.threads), work, options.grain);
     m_edgeSplit = splits(static_cast<std::int64_t>(m_model.edges().size()), m_threads);
     m_tetSplit = splits(terms.volume ? mesh.tetCount() : 0, m_threads);
     m_triSplit = splits(static_cast<std::int64_t>(m_model.triangles().size()), m_threads);
@@ -47,7 +51,7 @@ DeformationEffect::Chunk DeformationEffect::chunk(int t) const {
     };
     Chunk c;
     c.edges = range(m_edgeSplit, static_cast<std::int64_t>(m_model.edges().size()));
-    c.tets = range(m_tetSplit, static_cast<std::int64_t>(m_model.tetRestVolume().size()));
+    c.tets = range(m_tetSplit, static_cast<std::int64_t>(m_model.tetRestVolume6().size()));
     c.triangles = range(m_triSplit, static_cast<std::int64_t>(m_model.triangles().size()));
     return c;
 }
@@ -84,8 +88,9 @@ template <class Kernel> double DeformationEffect::run(std::span<Vec3> out, Kerne
             w = ForceWindow{own.buffer, own.lo};
         }
         partial[t] = kernel(w, chunk(t));
-        parallelBarrier();
-        // Thread t adds the windows of threads 1.. into its share of the nodes, in order.
+    });
+    // Then chunk t of the nodes adds the windows of threads 1.. into the output, in order.
+    parallelRun(m_threads, [&](int t) {
         const std::int64_t begin = chunkBegin(nodes, m_threads, t);
         const std::int64_t end = chunkBegin(nodes, m_threads, t + 1);
         for (int u = 1; u < m_threads; ++u) {
@@ -116,8 +121,8 @@ double DeformationEffect::addForces(const SimState& s, std::span<Vec3> f) {
         if (c.tets.end > c.tets.begin) {
             const auto n = static_cast<std::size_t>(c.tets.end - c.tets.begin);
             e += addVolumeForces(tets.subspan(c.tets.begin, n),
-                                 m.tetRestVolume().subspan(c.tets.begin, n),
-                                 m.tetStiffness().subspan(c.tets.begin, n), s.x, w);
+                                 m.tetRestVolume6().subspan(c.tets.begin, n),
+                                 m.tetStiffness36().subspan(c.tets.begin, n), s.x, w);
         }
         if (c.triangles.end > c.triangles.begin) {
             const auto n = static_cast<std::size_t>(c.triangles.end - c.triangles.begin);
@@ -143,7 +148,7 @@ void DeformationEffect::addForceDifferential(const SimState& s, std::span<const 
         if (c.tets.end > c.tets.begin) {
             const auto n = static_cast<std::size_t>(c.tets.end - c.tets.begin);
             addVolumeForceDifferential(tets.subspan(c.tets.begin, n),
-                                       m.tetStiffness().subspan(c.tets.begin, n), s.x, dx, w);
+                                       m.tetStiffness36().subspan(c.tets.begin, n), s.x, dx, w);
         }
         if (c.triangles.end > c.triangles.begin) {
             const auto n = static_cast<std::size_t>(c.triangles.end - c.triangles.begin);
@@ -170,7 +175,7 @@ void DeformationEffect::addSystemDiagonal(const SimState& s, double h, std::span
         if (c.tets.end > c.tets.begin) {
             const auto n = static_cast<std::size_t>(c.tets.end - c.tets.begin);
             addVolumeStiffnessDiagonal(tets.subspan(c.tets.begin, n),
-                                       m.tetStiffness().subspan(c.tets.begin, n), s.x, w);
+                                       m.tetStiffness36().subspan(c.tets.begin, n), s.x, w);
         }
         if (c.triangles.end > c.triangles.begin) {
             const auto n = static_cast<std::size_t>(c.triangles.end - c.triangles.begin);

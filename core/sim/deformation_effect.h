@@ -22,7 +22,8 @@ namespace resect {
 
 struct DeformationOptions {
     DeformationTerms terms;
-    int threads = 0;  ///< 0: resolveThreadCount's default
+    int threads = 0;    ///< 0: resolveThreadCount's default
+    int grain = 4096;   ///< fewer threads if one would get fewer terms (threadsFor)
 };
 
 class DeformationEffect : public Effect {

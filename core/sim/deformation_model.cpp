@@ -102,9 +102,11 @@ DeformationModel::DeformationModel(const TetMesh& mesh, const Material& material
 void DeformationModel::setTet(const TetMesh& mesh, int t) {
     const Tet& q = mesh.tet(t);
     const auto m = mesh.masses();
-    const double v0 = restTetVolume(mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3]));
-    m_tetRest[t] = v0;
-    m_tetK[t] = v0 != 0 ? m_material.stiffness * (m[q[0]] + m[q[1]] + m[q[2]] + m[q[3]]) / (v0 * v0)
+    const double v6 = restTetVolume6(mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3]));
+    const double v0 = v6 / 6.0;
+    m_tetRest[t] = v6;
+    // Eq. 4, k_v = k sum m / V0^2, stored as k_v / 36.
+    m_tetK[t] = v0 != 0 ? m_material.stiffness * (m[q[0]] + m[q[1]] + m[q[2]] + m[q[3]]) / (v0 * v0) / 36.0
                         : 0.0;
 }
 

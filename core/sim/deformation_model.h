@@ -60,9 +60,9 @@ public:
     std::span<const Edge> edges() const { return m_edges; }
     std::span<const double> edgeRestLength() const { return m_edgeRest; }
     std::span<const double> edgeStiffness() const { return m_edgeK; }
-    // --- volume terms (#tets, indexed like mesh.tets()) ---
-    std::span<const double> tetRestVolume() const { return m_tetRest; }
-    std::span<const double> tetStiffness() const { return m_tetK; }
+    // --- volume terms (#tets, indexed like mesh.tets()), scaled as forces.h says ---
+    std::span<const double> tetRestVolume6() const { return m_tetRest; }  ///< 6 V0
+    std::span<const double> tetStiffness36() const { return m_tetK; }     ///< k_v / 36
     // --- area terms (#triangle slots) ---
     std::span<const Tri> triangles() const { return m_tris; }
     std::span<const double> triangleRestArea() const { return m_triRest; }

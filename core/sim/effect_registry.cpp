@@ -22,6 +22,7 @@ EffectRegistry EffectRegistry::withBuiltins() {
         DeformationOptions options;
         options.terms = s.deformation;
         options.threads = s.threads;
+        options.grain = s.grain;
         out = std::make_unique<DeformationEffect>(mesh, material, options);
         return Status::success();
     });
@@ -29,7 +30,7 @@ EffectRegistry EffectRegistry::withBuiltins() {
                         std::unique_ptr<Effect>& out) {
         if (!s.gravity.allFinite())
             return Status::error("gravity: the acceleration must be finite");
-        out = std::make_unique<GravityEffect>(s.gravity, resolveThreadCount(s.threads));
+        out = std::make_unique<GravityEffect>(s.gravity, resolveThreadCount(s.threads), s.grain);
         return Status::success();
     });
     r.add("damping", [](const TetMesh&, const Material& material, const EffectSettings& s,
@@ -38,7 +39,7 @@ EffectRegistry EffectRegistry::withBuiltins() {
         if (!std::isfinite(c) || !(c > 0))
             return Status::error("damping: the coefficient must be finite and positive (1/s), got " +
                                  std::to_string(c));
-        out = std::make_unique<DampingEffect>(c, resolveThreadCount(s.threads));
+        out = std::make_unique<DampingEffect>(c, resolveThreadCount(s.threads), s.grain);
         return Status::success();
     });
     r.add("fixed", [](const TetMesh& mesh, const Material&, const EffectSettings& s,

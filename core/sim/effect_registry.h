@@ -33,6 +33,7 @@ struct EffectSettings {
     std::optional<double> damping;           ///< damping: 1/s (default Material::damping, > 0)
     std::map<std::string, double> extra;     ///< parameters of registered effects
     int threads = 0;                         ///< 0: resolveThreadCount's default
+    int grain = 4096;                        ///< minimum work per thread (parallel.h)
 };
 
 class EffectRegistry {

@@ -46,7 +46,7 @@ inline double stepOverMass(double h, double m) { return m > 0 ? h / m : 0.0; }
 
 } // namespace
 
-NodePass symplecticEulerUpdate(std::span<Vec3> x, std::span<Vec3> v, std::span<const Vec3> f,
+NodePass symplecticEulerUpdate(std::span<Vec3> x, std::span<Vec3> v, std::span<Vec3> f,
                                std::span<const double> mass, double h,
                                std::span<Vec3> backupX, std::span<Vec3> backupV, int threads) {
     const bool backup = !backupX.empty();
@@ -63,6 +63,7 @@ NodePass symplecticEulerUpdate(std::span<Vec3> x, std::span<Vec3> v, std::span<c
                            const Vec3 xi = x[i] + h * vi;
                            v[i] = vi;
                            x[i] = xi;
+                           f[i].setZero();
                            account(p, m, xi, vi);
                        }
                    });

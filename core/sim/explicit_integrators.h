@@ -24,8 +24,9 @@ struct NodePass {
     bool finite = true;
 };
 
-/// x, v, f, mass: #nodes. backupX, backupV: #nodes or empty.
-NodePass symplecticEulerUpdate(std::span<Vec3> x, std::span<Vec3> v, std::span<const Vec3> f,
+/// x, v, f, mass: #nodes. backupX, backupV: #nodes or empty. f is consumed: it is left zero,
+/// ready for the next step's forces (saving the caller a pass over it).
+NodePass symplecticEulerUpdate(std::span<Vec3> x, std::span<Vec3> v, std::span<Vec3> f,
                                std::span<const double> mass, double h,
                                std::span<Vec3> backupX, std::span<Vec3> backupV, int threads);
 

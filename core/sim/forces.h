@@ -10,8 +10,19 @@
 //   edge (a, b):        C = |x_b - x_a|                        (distance preservation)
 //   tet (p0..p3):       C = det[p1-p0, p2-p0, p3-p0] / 6       (volume preservation, signed)
 //   triangle (p0..p2):  C = |(p1-p0) x (p2-p0)| / 2            (surface-area preservation)
-// The rest values come from the reference positions through the same expressions
-// (restEdgeLength, restTetVolume, restTriangleArea), so a mesh at rest has exactly zero force.
+// The rest values come from the reference positions through the same arithmetic as the
+// kernels (restEdgeLength, restTetVolume6, restTriangleArea), so a mesh at rest has exactly
+// zero force (this relies on identical rounding, i.e. no FMA contraction differing between
+// the two; the default x86-64 build has no FMA).
+//
+// Volume terms are stored scaled, to spare two divisions per tet: the rest value is
+// 6 V0 = det[p1-p0, p2-p0, p3-p0] and the stiffness k_v / 36, so that
+// E = 1/2 (k_v / 36) (6V - 6V0)^2 = 1/2 k_v (V - V0)^2.
+//
+// Performance: the edge and volume kernels run two terms per SSE2 instruction (Eigen's
+// Array2d or intrinsics; the arithmetic of each lane is the scalar arithmetic), then scatter
+// each term's forces. About 5 ns per edge and 9 ns per tet on one core of the 2-core
+// benchmark machine (resect bench sim), compute-bound.
 //
 // The differentials are the Gauss-Newton part of the Hessian, k dC/dx dC/dx^T, plus for the
 // edges the transverse term k max(0, 1 - l0/l) (I - n n^T): symmetric negative semi-definite
@@ -39,13 +50,10 @@ struct ForceWindow {
 };
 
 // --- rest values: the constraint functions, shared by the kernels -------------------------
-inline double restEdgeLength(const Vec3& a, const Vec3& b) { return (b - a).norm(); }
-inline double restTetVolume(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
-    return (p1 - p0).dot((p2 - p0).cross(p3 - p0)) / 6.0;
-}
-inline double restTriangleArea(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
-    return 0.5 * (p1 - p0).cross(p2 - p0).norm();
-}
+double restEdgeLength(const Vec3& a, const Vec3& b);
+/// 6 V0 = det[p1-p0, p2-p0, p3-p0] (signed).
+double restTetVolume6(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3);
+double restTriangleArea(const Vec3& p0, const Vec3& p1, const Vec3& p2);
 
 // --- forces and energies ------------------------------------------------------------------
 /// Distance preservation. edges, restLength, stiffness: #edges. x: #nodes positions.
@@ -53,9 +61,9 @@ inline double restTriangleArea(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
 double addEdgeForces(std::span<const Edge> edges, std::span<const double> restLength,
                      std::span<const double> stiffness, std::span<const Vec3> x, ForceWindow f);
 
-/// Volume preservation. tets, restVolume, stiffness: #tets (signed rest volumes).
-double addVolumeForces(std::span<const Tet> tets, std::span<const double> restVolume,
-                       std::span<const double> stiffness, std::span<const Vec3> x,
+/// Volume preservation. tets, restVolume6 (6 V0, signed), stiffness36 (k_v / 36): #tets.
+double addVolumeForces(std::span<const Tet> tets, std::span<const double> restVolume6,
+                       std::span<const double> stiffness36, std::span<const Vec3> x,
                        ForceWindow f);
 
 /// Surface-area preservation. triangles, restArea, stiffness: #triangles. A triangle of zero
@@ -68,7 +76,7 @@ double addAreaForces(std::span<const Tri> triangles, std::span<const double> res
 void addEdgeForceDifferential(std::span<const Edge> edges, std::span<const double> restLength,
                               std::span<const double> stiffness, std::span<const Vec3> x,
                               std::span<const Vec3> dx, ForceWindow df);
-void addVolumeForceDifferential(std::span<const Tet> tets, std::span<const double> stiffness,
+void addVolumeForceDifferential(std::span<const Tet> tets, std::span<const double> stiffness36,
                                 std::span<const Vec3> x, std::span<const Vec3> dx,
                                 ForceWindow df);
 void addAreaForceDifferential(std::span<const Tri> triangles, std::span<const double> stiffness,
@@ -79,7 +87,7 @@ void addAreaForceDifferential(std::span<const Tri> triangles, std::span<const do
 void addEdgeStiffnessDiagonal(std::span<const Edge> edges, std::span<const double> restLength,
                               std::span<const double> stiffness, std::span<const Vec3> x,
                               ForceWindow diag);
-void addVolumeStiffnessDiagonal(std::span<const Tet> tets, std::span<const double> stiffness,
+void addVolumeStiffnessDiagonal(std::span<const Tet> tets, std::span<const double> stiffness36,
                                 std::span<const Vec3> x, ForceWindow diag);
 void addAreaStiffnessDiagonal(std::span<const Tri> triangles, std::span<const double> stiffness,
                               std::span<const Vec3> x, ForceWindow diag);

@@ -5,7 +5,8 @@
 namespace resect {
 
 double GravityEffect::addForces(const SimState& s, std::span<Vec3> f) {
-    return parallelSum(m_threads, static_cast<std::int64_t>(f.size()),
+    return parallelSum(threadsFor(m_threads, static_cast<std::int64_t>(f.size()), m_grain),
+                       static_cast<std::int64_t>(f.size()),
                        [&](std::int64_t begin, std::int64_t end) {
                            double potential = 0;
                            for (std::int64_t i = begin; i < end; ++i) {

@@ -9,8 +9,8 @@ namespace resect {
 
 class GravityEffect : public Effect {
 public:
-    explicit GravityEffect(const Vec3& g = Vec3(0, 0, -9810), int threads = 1)
-        : m_g(g), m_threads(threads) {}
+    explicit GravityEffect(const Vec3& g = Vec3(0, 0, -9810), int threads = 1, int grain = 4096)
+        : m_g(g), m_threads(threads), m_grain(grain) {}
     std::string name() const override { return "gravity"; }
     double addForces(const SimState& s, std::span<Vec3> f) override;
     const Vec3& acceleration() const { return m_g; }
@@ -18,6 +18,7 @@ public:
 private:
     Vec3 m_g;
     int m_threads;
+    int m_grain;
 };
 
 } // namespace resect

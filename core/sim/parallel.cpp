@@ -12,8 +12,7 @@ int resolveThreadCount(int requested) {
 #ifdef RESECT_HAVE_OPENMP
     return requested > 0 ? requested : omp_get_max_threads();
 #else
-    (void)requested;
-    return 1;  // without OpenMP everything runs on the calling thread
+    return requested > 0 ? requested : 1;  // run one after another: same results, no speed-up
 #endif
 }
 
@@ -23,21 +22,10 @@ void parallelRun(int threads, const std::function<void(int)>& body) {
         return;
     }
 #ifdef RESECT_HAVE_OPENMP
-#pragma omp parallel num_threads(threads)
-    {
-        // With dynamic adjustment off (OpenMP's default) num_threads grants exactly `threads`
-        // threads, which the fixed partition and the barriers rely on.
-        body(omp_get_thread_num());
-    }
-#else
-    body(0);  // unreachable: resolveThreadCount gives 1 without OpenMP
+#pragma omp parallel for num_threads(threads) schedule(static, 1)
 #endif
-}
-
-void parallelBarrier() {
-#ifdef RESECT_HAVE_OPENMP
-#pragma omp barrier
-#endif
+    for (int t = 0; t < threads; ++t)
+        body(t);
 }
 
 double parallelSum(int threads, std::int64_t count,

@@ -63,8 +63,8 @@ Status Simulator::addEffect(const std::string& name, EffectSettings settings,
                             const EffectRegistry& registry) {
     if (findEffect(name))
         return Status::error("effect '" + name + "' added twice");
-    if (settings.threads == 0)
-        settings.threads = m_threads;
+    settings.threads = m_threads;
+    settings.grain = m_options.grain;
     std::unique_ptr<Effect> effect;
     if (Status s = registry.create(name, m_mesh, m_material, settings, effect); !s.ok())
         return s;
@@ -84,6 +84,10 @@ void Simulator::addEffect(std::unique_ptr<Effect> effect) {
     m_effectPotential.assign(m_effects.size(), 0);
     m_forcesValid = false;
     m_needReference = true;
+}
+
+int Simulator::nodeThreads() const {
+    return threadsFor(m_threads, m_mesh.nodeCount(), m_options.grain);
 }
 
 Effect* Simulator::findEffect(const std::string& name) const {
@@ -129,7 +133,7 @@ SimState Simulator::state(double h) {
 void Simulator::ensureBuffers() {
     const auto n = static_cast<std::size_t>(m_mesh.nodeCount());
     if (m_force.size() != n) {
-        m_force.resize(n, Vec3::Zero());
+        m_force.resize(n, Vec3::Zero());  // new entries zero: m_forceZero stays true
         m_forcesValid = false;
     }
     if (m_options.keepLastGoodState) {
@@ -147,8 +151,9 @@ void Simulator::constrainAll(std::span<Vec3> v, bool timed) {
     }
 }
 
-double Simulator::evaluateForces(const SimState& s, std::span<Vec3> f) {
-    zero(f, m_threads);
+double Simulator::evaluateForces(const SimState& s, std::span<Vec3> f, bool zeroed) {
+    if (!zeroed)
+        zero(f, nodeThreads());
     double potential = 0;
     for (std::size_t i = 0; i < m_effects.size(); ++i) {
         const auto t0 = Clock::now();
@@ -165,7 +170,7 @@ double Simulator::computeForces(std::span<Vec3> f) {
 }
 
 double Simulator::kineticEnergy() const {
-    return measureVelocities(m_mesh.velocities(), m_mesh.masses(), m_threads).kineticEnergy;
+    return measureVelocities(m_mesh.velocities(), m_mesh.masses(), nodeThreads()).kineticEnergy;
 }
 
 double Simulator::totalEnergy() {
@@ -177,7 +182,8 @@ Status Simulator::implicitStep(const SimState& s, double h, NodePass& pass, doub
     const auto n = static_cast<std::size_t>(m_mesh.nodeCount());
     for (auto* b : {&m_rhs, &m_dv, &m_diag, &m_tmp, &m_kd, &m_dd})
         b->resize(n);
-    potential = evaluateForces(s, m_force);
+    potential = evaluateForces(s, m_force, m_forceZero);
+    m_forceZero = false;
 
     // b = h (f + h K v), constrained.
     std::fill(m_kd.begin(), m_kd.end(), Vec3::Zero());
@@ -225,7 +231,7 @@ Status Simulator::implicitStep(const SimState& s, double h, NodePass& pass, doub
     const LinearSolve solve = solveConjugateGradient(apply, m_diag, m_rhs, m_dv, m_options.implicit);
     m_last.solverIterations = solve.iterations;
     constrainAll(m_dv, true);
-    pass = velocityChangeUpdate(s.x, s.v, m_dv, s.mass, h, m_backupX, m_backupV, m_threads);
+    pass = velocityChangeUpdate(s.x, s.v, m_dv, s.mass, h, m_backupX, m_backupV, nodeThreads());
     return Status::success();
 }
 
@@ -243,8 +249,9 @@ Status Simulator::step(double h) {
     if (m_needReference) {
         // Energy reference for divergence detection (see simulator.h).
         const double kinetic = kineticEnergy();
-        m_forcePotential = evaluateForces(s, m_force);
+        m_forcePotential = evaluateForces(s, m_force, m_forceZero);
         m_forcesValid = true;
+        m_forceZero = false;
         m_referenceEnergy = kinetic + m_forcePotential;
         double totalMass = 0;
         for (double m : m_mesh.masses())
@@ -259,16 +266,18 @@ Status Simulator::step(double h) {
     double potential = 0;
     switch (m_options.integrator) {
     case Integrator::SymplecticEuler:
-        potential = evaluateForces(s, m_force);
-        pass = symplecticEulerUpdate(s.x, s.v, m_force, s.mass, h, m_backupX, m_backupV, m_threads);
+        potential = evaluateForces(s, m_force, m_forceZero);
+        pass = symplecticEulerUpdate(s.x, s.v, m_force, s.mass, h, m_backupX, m_backupV, nodeThreads());
         m_forcesValid = false;
+        m_forceZero = true;
         break;
     case Integrator::VelocityVerlet: {
+        m_forceZero = false;
         if (!m_forcesValid)
             m_forcePotential = evaluateForces(s, m_force);
-        const NodePass drift = verletKickDrift(s.x, s.v, m_force, s.mass, h, m_backupX, m_backupV, m_threads);
+        const NodePass drift = verletKickDrift(s.x, s.v, m_force, s.mass, h, m_backupX, m_backupV, nodeThreads());
         potential = evaluateForces(s, m_force);
-        pass = verletKick(s.v, m_force, s.mass, h, m_threads);
+        pass = verletKick(s.v, m_force, s.mass, h, nodeThreads());
         pass.finite = pass.finite && drift.finite;
         m_forcePotential = potential;
         m_forcesValid = true;
@@ -317,7 +326,7 @@ Status Simulator::step(double h) {
         m_effectMs[i] += msSince(t0);
     }
     if (corrected) {
-        pass = measureVelocities(s.v, s.mass, m_threads);
+        pass = measureVelocities(s.v, s.mass, nodeThreads());
         m_forcesValid = false;
     }
 

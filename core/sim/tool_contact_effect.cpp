@@ -40,7 +40,7 @@ Status checkTool(const Tool& tool) {
 }
 
 ToolContactEffect::ToolContactEffect(const TetMesh& mesh, Tool tool)
-    : m_tool(std::move(tool)), m_position(mesh.nodeCount(), -1) {
+    : m_tool(std::move(tool)), m_previous(m_tool.points), m_position(mesh.nodeCount(), -1) {
     for (const BoundaryFace& f : boundaryFaces(mesh))
         for (int v : f.nodes)
             setSurface(v, true);
@@ -90,14 +90,20 @@ Vec3 ToolContactEffect::closestPoint(const Vec3& p) const {
 
 bool ToolContactEffect::afterStep(const SimState& s) {
     const double r = m_tool.radius;
-    Vec3 lo = m_tool.points[0], hi = m_tool.points[0];
-    for (const Vec3& p : m_tool.points) {
+    const auto& pts = m_tool.points;
+    Vec3 lo = pts[0], hi = pts[0];
+    for (const Vec3& p : pts) {
         lo = lo.cwiseMin(p);
         hi = hi.cwiseMax(p);
     }
     lo.array() -= r;
     hi.array() += r;
-    const auto& pts = m_tool.points;
+    // Tool velocity at the pose's points, from the pose of the previous step.
+    std::vector<Vec3> velocity(pts.size(), Vec3::Zero());
+    if (s.dt > 0)
+        for (std::size_t i = 0; i < pts.size(); ++i)
+            velocity[i] = (pts[i] - m_previous[i]) / s.dt;
+    const std::size_t segments = pts.size() > 1 ? pts.size() - 1 : 1;
     m_lastContacts = 0;
     for (int n : m_surface) {
         const Vec3 start = s.x[n];
@@ -106,31 +112,36 @@ bool ToolContactEffect::afterStep(const SimState& s) {
         // Push out of every capsule; at a bend of the polyline a push out of one capsule can
         // end inside the next, so repeat a few times.
         Vec3 p = start;
+        Vec3& v = s.v[n];
         for (int pass = 0; pass < 4; ++pass) {
             bool inside = false;
-            const std::size_t segments = pts.size() > 1 ? pts.size() - 1 : 1;
             for (std::size_t i = 0; i < segments; ++i) {
-                const Vec3& a = pts[i];
-                const Vec3& b = pts.size() > 1 ? pts[i + 1] : pts[i];
-                const Vec3 c = closestOnSegment(p, a, b);
+                const std::size_t j = pts.size() > 1 ? i + 1 : i;
+                const Vec3 ab = pts[j] - pts[i];
+                const double l2 = ab.squaredNorm();
+                const double t = l2 > 0 ? std::clamp((p - pts[i]).dot(ab) / l2, 0.0, 1.0) : 0.0;
+                const Vec3 c = pts[i] + t * ab;
                 const Vec3 d = p - c;
                 const double dist = d.norm();
                 if (dist >= r)
                     continue;
-                const Vec3 dir = dist > 0 ? Vec3(d / dist) : perpendicular(b - a);
-                p = c + r * dir;
+                const Vec3 normal = dist > 0 ? Vec3(d / dist) : perpendicular(ab);
+                p = c + r * normal;
+                const Vec3 toolVelocity = (1 - t) * velocity[i] + t * velocity[j];
+                const double approach = (v - toolVelocity).dot(normal);
+                if (approach < 0)
+                    v -= approach * normal;
                 inside = true;
             }
             if (!inside)
                 break;
         }
         if (p != start) {
-            if (s.dt > 0)
-                s.v[n] += (p - start) / s.dt;
             s.x[n] = p;
             ++m_lastContacts;
         }
     }
+    m_previous = pts;
     return m_lastContacts > 0;
 }
 

@@ -5,11 +5,12 @@
 // single point is a sphere). Its pose (the polyline's points) can be set before every step.
 // Contact is resolved by projection, not by a penalty force: after the integrator moved the
 // nodes, every surface node (a node of a boundary face) inside the tool is moved to the
-// nearest point of the tool's surface, and its velocity gets the same correction divided by
-// the step, v += dx / dt (as in position-based dynamics), which removes the velocity into
-// the tool and gives pushed nodes the tool's speed. Projection needs no contact stiffness, so
-// it does not lower the stable time step, and it never lets a surface node stay inside the
-// tool, whatever the tool's speed. Interior nodes are not tested: the tissue is only reached
+// nearest point of the tool's surface, and the normal component of its velocity relative to
+// the tool is clamped so that it no longer approaches the tool (inelastic contact, no
+// friction; the tool's velocity comes from its last two poses). Projection needs no contact
+// stiffness, so it does not lower the stable time step, it never lets a surface node stay
+// inside the tool whatever the tool's speed, and a deep initial overlap is resolved without
+// turning the position jump into velocity. Interior nodes are not tested: the tissue is only reached
 // through its surface. Cost per step: O(surface nodes within the tool's bounding box x
 // segments).
 
@@ -53,6 +54,7 @@ private:
     void setSurface(int node, bool surface);
 
     Tool m_tool;
+    std::vector<Vec3> m_previous;  ///< the pose at the end of the last step (tool velocity)
     std::vector<int> m_surface;   ///< surface nodes
     std::vector<int> m_position;  ///< #nodes: index in m_surface, or -1
     int m_lastContacts = 0;
