@@ -23,7 +23,8 @@
 namespace resect::cli {
 namespace {
 
-std::vector<int> parseList(Args& args, const std::string& name, std::vector<int> fallback, long lo, long hi) {
+std::vector<int> parseList(Args& args, const std::string& name, std::vector<int> fallback, long lo,
+                           long hi) {
     const auto text = args.option(name);
     if (!text)
         return fallback;
@@ -34,8 +35,8 @@ std::vector<int> parseList(Args& args, const std::string& name, std::vector<int>
         char* end = nullptr;
         const long v = std::strtol(item.c_str(), &end, 10);
         if (end == item.c_str() || *end != 0 || v < lo || v > hi)
-            badInput(name + ": expected whole numbers in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                     "], got '" + item + "'");
+            badInput(name + ": expected whole numbers in [" + std::to_string(lo) + ", " +
+                     std::to_string(hi) + "], got '" + item + "'");
         values.push_back(static_cast<int>(v));
     }
     if (values.empty())
@@ -65,7 +66,8 @@ TetMesh benchMesh(int tets) {
 } // namespace
 
 int runBenchSim(Args& args) {
-    const std::vector<int> sizes = parseList(args, "--sizes", {10000, 100000, 1000000}, 6, 20000000);
+    const std::vector<int> sizes =
+        parseList(args, "--sizes", {10000, 100000, 1000000}, 6, 20000000);
     const std::vector<int> threadCounts = parseList(args, "--threads", {1, 2}, 1, 256);
     const auto steps = args.integer("--steps", 1, 100000);
     args.finish();
@@ -77,14 +79,16 @@ int runBenchSim(Args& args) {
         requireOk(probe.addEffect("deformation"));
         dt = 0.8 * probe.stableTimeStep();
     }
-    std::printf("explicit step (symplectic Euler; deformation: distance, volume, area), dt = %.4g s\n", dt);
-    std::printf("per step: the fastest and the median wall time, and the process CPU time divided by the\n"
-                "threads (cpu_ms; what the wall time would be on an idle machine if the threads share the\n"
-                "work evenly; run with OMP_WAIT_POLICY=passive so that waiting threads do not spin).\n"
-                "deformation_ms and other_ms: mean wall time in the deformation effect and outside it.\n");
-    std::printf("%10s %10s %10s %8s %7s %9s %10s %9s %11s %11s %11s %15s %9s\n", "tets", "nodes", "edges",
-                "threads", "steps", "min_ms", "median_ms", "cpu_ms", "ns_tet_min", "ns_tet_med", "ns_tet_cpu",
-                "deformation_ms", "other_ms");
+    std::printf(
+        "explicit step (symplectic Euler; deformation: distance, volume, area), dt = %.4g s\n", dt);
+    std::printf(
+        "per step: the fastest and the median wall time, and the process CPU time divided by the\n"
+        "threads (cpu_ms; what the wall time would be on an idle machine if the threads share the\n"
+        "work evenly; run with OMP_WAIT_POLICY=passive so that waiting threads do not spin).\n"
+        "deformation_ms and other_ms: mean wall time in the deformation effect and outside it.\n");
+    std::printf("%10s %10s %10s %8s %7s %9s %10s %9s %11s %11s %11s %15s %9s\n", "tets", "nodes",
+                "edges", "threads", "steps", "min_ms", "median_ms", "cpu_ms", "ns_tet_min",
+                "ns_tet_med", "ns_tet_cpu", "deformation_ms", "other_ms");
     for (int target : sizes) {
         TetMesh base = benchMesh(target);
         for (int threads : threadCounts) {
@@ -94,9 +98,12 @@ int runBenchSim(Args& args) {
             options.dt = dt;
             Simulator sim(mesh, Material{}, options);
             requireOk(sim.addEffect("deformation"));
-            const int edges = static_cast<DeformationEffect*>(sim.findEffect("deformation"))->model().liveEdgeCount();
-            const int n = steps.value_or(std::clamp(static_cast<int>(3e7 / mesh.tetCount()), 5, 2000));
-            for (int s = 0; s < 3; ++s)  // warm-up: buffers, first touch, caches
+            const int edges = static_cast<DeformationEffect*>(sim.findEffect("deformation"))
+                                  ->model()
+                                  .liveEdgeCount();
+            const int n =
+                steps.value_or(std::clamp(static_cast<int>(3e7 / mesh.tetCount()), 5, 2000));
+            for (int s = 0; s < 3; ++s) // warm-up: buffers, first touch, caches
                 if (Status st = sim.step(); !st.ok())
                     throw CliError{kInternal, st.message()};
             std::vector<double> ms;
@@ -106,7 +113,9 @@ int runBenchSim(Args& args) {
                 const auto t0 = std::chrono::steady_clock::now();
                 if (Status st = sim.step(); !st.ok())
                     throw CliError{kInternal, st.message()};
-                ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+                ms.push_back(
+                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                        .count());
                 deformation += sim.lastStep().effects[0].ms;
             }
             const double cpu = (processCpuMs() - cpu0) / n / sim.threads();
@@ -116,11 +125,12 @@ int runBenchSim(Args& args) {
             for (double v : ms)
                 mean += v;
             mean /= static_cast<double>(ms.size());
-            deformation /= n;  // mean per step, like other_ms
-            std::printf("%10d %10d %10d %8d %7d %9.3f %10.3f %9.3f %11.2f %11.2f %11.2f %15.3f %9.3f\n",
-                        mesh.tetCount(), mesh.nodeCount(), edges, sim.threads(), n, ms.front(), median, cpu,
-                        1e6 * ms.front() / mesh.tetCount(), 1e6 * median / mesh.tetCount(),
-                        1e6 * cpu / mesh.tetCount(), deformation, mean - deformation);
+            deformation /= n; // mean per step, like other_ms
+            std::printf(
+                "%10d %10d %10d %8d %7d %9.3f %10.3f %9.3f %11.2f %11.2f %11.2f %15.3f %9.3f\n",
+                mesh.tetCount(), mesh.nodeCount(), edges, sim.threads(), n, ms.front(), median, cpu,
+                1e6 * ms.front() / mesh.tetCount(), 1e6 * median / mesh.tetCount(),
+                1e6 * cpu / mesh.tetCount(), deformation, mean - deformation);
             std::fflush(stdout);
         }
     }

@@ -78,7 +78,9 @@ int countInverted(const TetMesh& mesh) {
 }
 
 /// A JSON number, or null if not finite (JSON has no NaN).
-QJsonValue number(double v) { return std::isfinite(v) ? QJsonValue(v) : QJsonValue(); }
+QJsonValue number(double v) {
+    return std::isfinite(v) ? QJsonValue(v) : QJsonValue();
+}
 
 } // namespace
 
@@ -162,7 +164,8 @@ int runSimulate(Args args) {
     const double stableDt = sim.stableTimeStep();
     const double h = sim.timeStep();
     if (!std::isfinite(h) || !(h > 0))
-        throw CliError{kInternal, "no usable time step (stable estimate " + std::to_string(stableDt) + " s)"};
+        throw CliError{kInternal,
+                       "no usable time step (stable estimate " + std::to_string(stableDt) + " s)"};
     const double initialKinetic = sim.kineticEnergy();
     double maxKinetic = initialKinetic, maxSpeed = 0, finalKinetic = initialKinetic;
     Status failure;
@@ -208,13 +211,15 @@ int runSimulate(Args args) {
         if (Status s = writeJson(*reportPath, report); !s.ok())
             throw CliError{kInternal, s.message()};
     if (!finite)
-        throw CliError{kInternal, failure.ok() ? "the simulation produced non-finite positions; " + out + " not written"
+        throw CliError{kInternal, failure.ok() ? "the simulation produced non-finite positions; " +
+                                                     out + " not written"
                                                : failure.message() + "; " + out + " not written"};
     if (Status s = writeVtu(out, mesh); !s.ok())
         throw CliError{kInternal, s.message()};
-    std::printf("%s: %d steps of %.4g s (%s, stable %.4g s), max speed %.4g mm/s, %d inverted -> %s\n",
-                files[0].c_str(), sim.stepsTaken(), h, integratorName(integrator), stableDt, maxSpeed,
-                countInverted(mesh), out.c_str());
+    std::printf(
+        "%s: %d steps of %.4g s (%s, stable %.4g s), max speed %.4g mm/s, %d inverted -> %s\n",
+        files[0].c_str(), sim.stepsTaken(), h, integratorName(integrator), stableDt, maxSpeed,
+        countInverted(mesh), out.c_str());
     return kOk;
 }
 

@@ -21,7 +21,7 @@
 namespace resect {
 
 struct BackwardEulerOptions {
-    double tolerance = 1e-6;  ///< relative residual |A dv - b| / |b| at which CG stops
+    double tolerance = 1e-6; ///< relative residual |A dv - b| / |b| at which CG stops
     int maxIterations = 1000;
 };
 

@@ -6,13 +6,12 @@ namespace resect {
 
 double DampingEffect::addForces(const SimState& s, std::span<Vec3> f) {
     parallelSum(threadsFor(m_threads, static_cast<std::int64_t>(f.size()), m_grain),
-                       static_cast<std::int64_t>(f.size()),
-                [&](std::int64_t begin, std::int64_t end) {
+                static_cast<std::int64_t>(f.size()), [&](std::int64_t begin, std::int64_t end) {
                     for (std::int64_t i = begin; i < end; ++i)
                         f[i] -= m_c * s.mass[i] * s.v[i];
                     return 0.0;
                 });
-    return 0;  // not conservative
+    return 0; // not conservative
 }
 
 void DampingEffect::addVelocityDifferential(const SimState& s, std::span<const Vec3> dv,

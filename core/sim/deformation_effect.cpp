@@ -19,8 +19,7 @@ std::vector<std::int64_t> splits(std::int64_t count, int threads) {
 
 DeformationEffect::DeformationEffect(const TetMesh& mesh, const Material& material,
                                      const DeformationOptions& options)
-    : m_mesh(mesh), m_material(material), m_model(mesh, material, options.terms),
-      m_threads(1) {
+    : m_mesh(mesh), m_material(material), m_model(mesh, material, options.terms), m_threads(1) {
     const auto& terms = m_model.terms();
     const std::int64_t work = static_cast<std::int64_t>(m_model.edges().size()) +
                               static_cast<std::int64_t>(m_model.tetRestVolume6().size()) +
@@ -153,8 +152,8 @@ void DeformationEffect::addForceDifferential(const SimState& s, std::span<const 
         if (c.triangles.end > c.triangles.begin) {
             const auto n = static_cast<std::size_t>(c.triangles.end - c.triangles.begin);
             addAreaForceDifferential(m.triangles().subspan(c.triangles.begin, n),
-                                     m.triangleStiffness().subspan(c.triangles.begin, n), s.x,
-                                     dx, w);
+                                     m.triangleStiffness().subspan(c.triangles.begin, n), s.x, dx,
+                                     w);
         }
         return 0.0;
     });
@@ -180,8 +179,7 @@ void DeformationEffect::addSystemDiagonal(const SimState& s, double h, std::span
         if (c.triangles.end > c.triangles.begin) {
             const auto n = static_cast<std::size_t>(c.triangles.end - c.triangles.begin);
             addAreaStiffnessDiagonal(m.triangles().subspan(c.triangles.begin, n),
-                                     m.triangleStiffness().subspan(c.triangles.begin, n), s.x,
-                                     w);
+                                     m.triangleStiffness().subspan(c.triangles.begin, n), s.x, w);
         }
         return 0.0;
     });

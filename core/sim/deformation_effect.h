@@ -22,8 +22,8 @@ namespace resect {
 
 struct DeformationOptions {
     DeformationTerms terms;
-    int threads = 0;    ///< 0: resolveThreadCount's default
-    int grain = 4096;   ///< fewer threads if one would get fewer terms (threadsFor)
+    int threads = 0;  ///< 0: resolveThreadCount's default
+    int grain = 4096; ///< fewer threads if one would get fewer terms (threadsFor)
 };
 
 class DeformationEffect : public Effect {
@@ -70,9 +70,9 @@ private:
     Material m_material;
     DeformationModel m_model;
     int m_threads = 1;
-    std::vector<std::int64_t> m_edgeSplit, m_tetSplit, m_triSplit;  ///< #threads + 1
+    std::vector<std::int64_t> m_edgeSplit, m_tetSplit, m_triSplit; ///< #threads + 1
     std::vector<Window> m_windows;                                 ///< #threads (0 unused)
-    double m_stableDt = 0;  ///< 0: not computed yet or stale
+    double m_stableDt = 0;                                         ///< 0: not computed yet or stale
 };
 
 } // namespace resect

@@ -13,7 +13,9 @@ Tri sortedTri(Tri t) {
     return t;
 }
 
-bool tetHas(const Tet& q, int v) { return q[0] == v || q[1] == v || q[2] == v || q[3] == v; }
+bool tetHas(const Tet& q, int v) {
+    return q[0] == v || q[1] == v || q[2] == v || q[3] == v;
+}
 
 /// CSR offsets of slots sorted by owner: begin[o] .. begin[o+1] are the slots of owner o.
 std::vector<int> csrBegin(const std::vector<int>& sortedOwners, int nodeCount) {
@@ -66,7 +68,7 @@ DeformationModel::DeformationModel(const TetMesh& mesh, const Material& material
     : m_material(material), m_terms(terms) {
     const int nodes = mesh.nodeCount();
     if (terms.distance) {
-        m_edges = uniqueEdges(mesh);  // sorted by (a, b): grouped by smallest node
+        m_edges = uniqueEdges(mesh); // sorted by (a, b): grouped by smallest node
         m_edgeRest.resize(m_edges.size());
         m_edgeK.resize(m_edges.size());
         std::vector<int> owners(m_edges.size());
@@ -83,7 +85,7 @@ DeformationModel::DeformationModel(const TetMesh& mesh, const Material& material
             setTet(mesh, t);
     }
     if (terms.area) {
-        std::vector<std::pair<Tri, Tri>> faces;  // (sorted key, oriented nodes)
+        std::vector<std::pair<Tri, Tri>> faces; // (sorted key, oriented nodes)
         for (const BoundaryFace& f : boundaryFaces(mesh))
             faces.push_back({sortedTri(f.nodes), f.nodes});
         std::sort(faces.begin(), faces.end());
@@ -102,12 +104,14 @@ DeformationModel::DeformationModel(const TetMesh& mesh, const Material& material
 void DeformationModel::setTet(const TetMesh& mesh, int t) {
     const Tet& q = mesh.tet(t);
     const auto m = mesh.masses();
-    const double v6 = restTetVolume6(mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3]));
+    const double v6 =
+        restTetVolume6(mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3]));
     const double v0 = v6 / 6.0;
     m_tetRest[t] = v6;
     // Eq. 4, k_v = k sum m / V0^2, stored as k_v / 36.
-    m_tetK[t] = v0 != 0 ? m_material.stiffness * (m[q[0]] + m[q[1]] + m[q[2]] + m[q[3]]) / (v0 * v0) / 36.0
-                        : 0.0;
+    m_tetK[t] =
+        v0 != 0 ? m_material.stiffness * (m[q[0]] + m[q[1]] + m[q[2]] + m[q[3]]) / (v0 * v0) / 36.0
+                : 0.0;
 }
 
 void DeformationModel::setEdge(const TetMesh& mesh, int slot, int a, int b) {
@@ -180,7 +184,7 @@ int DeformationModel::allocateTriangle(int owner) {
 void DeformationModel::killEdge(int s) {
     const int owner = m_edges[s][0];
     m_edgeIndex.remove(owner, s);
-    m_edges[s] = {owner, owner};  // inert: zero length, zero stiffness
+    m_edges[s] = {owner, owner}; // inert: zero length, zero stiffness
     m_edgeRest[s] = 0;
     m_edgeK[s] = 0;
     m_freeEdges.push_back(s);
@@ -228,7 +232,7 @@ DeformationChanges DeformationModel::applyCut(const TetMesh& mesh, const CutChan
             m_edgeIndex.forEach(n, [&](int s) {
                 const auto [a, b] = m_edges[s];
                 if (a != n || b == n)
-                    return;  // owned by another node now, or inert
+                    return; // owned by another node now, or inert
                 bool exists = false;
                 for (int t : mesh.nodeTets(n))
                     exists = exists || tetHas(mesh.tet(t), b);

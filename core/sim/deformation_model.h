@@ -28,9 +28,9 @@
 namespace resect {
 
 struct DeformationTerms {
-    bool distance = true;  ///< distance preservation on every edge
-    bool volume = true;    ///< volume preservation on every tet
-    bool area = true;      ///< surface-area preservation on every boundary triangle
+    bool distance = true; ///< distance preservation on every edge
+    bool volume = true;   ///< volume preservation on every tet
+    bool area = true;     ///< surface-area preservation on every boundary triangle
 };
 
 /// Which slots a cut changed (created, re-used, re-computed or killed), for the caller's
@@ -61,8 +61,8 @@ public:
     std::span<const double> edgeRestLength() const { return m_edgeRest; }
     std::span<const double> edgeStiffness() const { return m_edgeK; }
     // --- volume terms (#tets, indexed like mesh.tets()), scaled as forces.h says ---
-    std::span<const double> tetRestVolume6() const { return m_tetRest; }  ///< 6 V0
-    std::span<const double> tetStiffness36() const { return m_tetK; }     ///< k_v / 36
+    std::span<const double> tetRestVolume6() const { return m_tetRest; } ///< 6 V0
+    std::span<const double> tetStiffness36() const { return m_tetK; }    ///< k_v / 36
     // --- area terms (#triangle slots) ---
     std::span<const Tri> triangles() const { return m_tris; }
     std::span<const double> triangleRestArea() const { return m_triRest; }
@@ -78,7 +78,7 @@ private:
     /// Slots grouped by their term's smallest node: the initial slots in a CSR layout, slots
     /// filled later in a per-node overflow list.
     struct SlotIndex {
-        std::vector<int> begin;  ///< #initial nodes + 1
+        std::vector<int> begin; ///< #initial nodes + 1
         std::unordered_map<int, std::vector<int>> extra;
         template <class F> void forEach(int owner, F&& f) const;
         bool inInitialRange(int owner, int slot) const;
@@ -89,8 +89,8 @@ private:
     void setTet(const TetMesh& mesh, int t);
     void setEdge(const TetMesh& mesh, int slot, int a, int b);
     void setTriangle(const TetMesh& mesh, int slot, const Tri& nodes);
-    int findEdge(int a, int b) const;            ///< a < b; -1 if absent
-    int findTriangle(const Tri& sortedNodes) const;  ///< -1 if absent
+    int findEdge(int a, int b) const;               ///< a < b; -1 if absent
+    int findTriangle(const Tri& sortedNodes) const; ///< -1 if absent
     int allocateEdge(int owner);
     int allocateTriangle(int owner);
     void killEdge(int slot);

@@ -26,8 +26,8 @@ struct SimState {
     std::span<Vec3> x;
     std::span<Vec3> v;
     std::span<const double> mass;
-    double time = 0;  ///< s, at the start of the step
-    double dt = 0;    ///< s, the step being taken
+    double time = 0; ///< s, at the start of the step
+    double dt = 0;   ///< s, the step being taken
 };
 
 class Effect {
@@ -59,7 +59,9 @@ public:
     virtual bool afterStep(const SimState& s) { return false; }
 
     /// The largest stable explicit step this effect allows (+inf if it does not limit it).
-    virtual double stableTimeStep(const TetMesh& mesh) { return std::numeric_limits<double>::infinity(); }
+    virtual double stableTimeStep(const TetMesh& mesh) {
+        return std::numeric_limits<double>::infinity();
+    }
     /// After a cut: the mesh has new nodes and tets (CutChanges), masses already updated.
     virtual void applyCut(const TetMesh& mesh, const CutChanges& changes) {}
 };

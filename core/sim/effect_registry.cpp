@@ -37,8 +37,9 @@ EffectRegistry EffectRegistry::withBuiltins() {
                         std::unique_ptr<Effect>& out) {
         const double c = s.damping.value_or(material.damping);
         if (!std::isfinite(c) || !(c > 0))
-            return Status::error("damping: the coefficient must be finite and positive (1/s), got " +
-                                 std::to_string(c));
+            return Status::error(
+                "damping: the coefficient must be finite and positive (1/s), got " +
+                std::to_string(c));
         out = std::make_unique<DampingEffect>(c, resolveThreadCount(s.threads), s.grain);
         return Status::success();
     });

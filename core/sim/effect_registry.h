@@ -26,21 +26,21 @@ namespace resect {
 
 /// Parameters of the built-in effects; each is read only if its effect is requested.
 struct EffectSettings {
-    DeformationTerms deformation;            ///< deformation: which terms
-    Vec3 gravity{0, 0, -9810};               ///< gravity: mm/s^2
-    FixedSelection fixed;                    ///< fixed: nodes or a box (one is required)
-    Tool tool;                               ///< tool-contact: polyline and radius (required)
-    std::optional<double> damping;           ///< damping: 1/s (default Material::damping, > 0)
-    std::map<std::string, double> extra;     ///< parameters of registered effects
-    int threads = 0;                         ///< 0: resolveThreadCount's default
-    int grain = 4096;                        ///< minimum work per thread (parallel.h)
+    DeformationTerms deformation;        ///< deformation: which terms
+    Vec3 gravity{0, 0, -9810};           ///< gravity: mm/s^2
+    FixedSelection fixed;                ///< fixed: nodes or a box (one is required)
+    Tool tool;                           ///< tool-contact: polyline and radius (required)
+    std::optional<double> damping;       ///< damping: 1/s (default Material::damping, > 0)
+    std::map<std::string, double> extra; ///< parameters of registered effects
+    int threads = 0;                     ///< 0: resolveThreadCount's default
+    int grain = 4096;                    ///< minimum work per thread (parallel.h)
 };
 
 class EffectRegistry {
 public:
-    using Factory = std::function<Status(const TetMesh& mesh, const Material& material,
-                                         const EffectSettings& settings,
-                                         std::unique_ptr<Effect>& out)>;
+    using Factory =
+        std::function<Status(const TetMesh& mesh, const Material& material,
+                             const EffectSettings& settings, std::unique_ptr<Effect>& out)>;
 
     /// A registry holding the built-in effects listed above.
     static EffectRegistry withBuiltins();

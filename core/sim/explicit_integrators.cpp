@@ -14,7 +14,7 @@ namespace {
 struct Partial {
     double kinetic = 0;
     double maxSpeed2 = 0;
-    double poison = 0;  ///< stays 0 unless a non-finite value was seen (then NaN)
+    double poison = 0; ///< stays 0 unless a non-finite value was seen (then NaN)
 };
 
 template <class Body> NodePass runPass(std::int64_t count, int threads, Body&& body) {
@@ -39,16 +39,18 @@ inline void account(Partial& p, double m, const Vec3& x, const Vec3& v) {
     const double v2 = v.squaredNorm();
     p.kinetic += 0.5 * m * v2;
     p.maxSpeed2 = std::max(p.maxSpeed2, v2);
-    p.poison += (x.sum() + v.sum()) * 0.0;  // NaN if any component is inf or NaN
+    p.poison += (x.sum() + v.sum()) * 0.0; // NaN if any component is inf or NaN
 }
 
-inline double stepOverMass(double h, double m) { return m > 0 ? h / m : 0.0; }
+inline double stepOverMass(double h, double m) {
+    return m > 0 ? h / m : 0.0;
+}
 
 } // namespace
 
 NodePass symplecticEulerUpdate(std::span<Vec3> x, std::span<Vec3> v, std::span<Vec3> f,
-                               std::span<const double> mass, double h,
-                               std::span<Vec3> backupX, std::span<Vec3> backupV, int threads) {
+                               std::span<const double> mass, double h, std::span<Vec3> backupX,
+                               std::span<Vec3> backupV, int threads) {
     const bool backup = !backupX.empty();
     return runPass(static_cast<std::int64_t>(x.size()), threads,
                    [&](std::int64_t begin, std::int64_t end, Partial& p) {
@@ -58,8 +60,8 @@ NodePass symplecticEulerUpdate(std::span<Vec3> x, std::span<Vec3> v, std::span<V
                                backupV[i] = v[i];
                            }
                            const double m = mass[i];
-                           const Vec3 vi = m > 0 ? Vec3(v[i] + stepOverMass(h, m) * f[i])
-                                                 : Vec3::Zero();
+                           const Vec3 vi =
+                               m > 0 ? Vec3(v[i] + stepOverMass(h, m) * f[i]) : Vec3::Zero();
                            const Vec3 xi = x[i] + h * vi;
                            v[i] = vi;
                            x[i] = xi;
@@ -81,8 +83,8 @@ NodePass verletKickDrift(std::span<Vec3> x, std::span<Vec3> v, std::span<const V
                                backupV[i] = v[i];
                            }
                            const double m = mass[i];
-                           const Vec3 vi = m > 0 ? Vec3(v[i] + stepOverMass(0.5 * h, m) * f[i])
-                                                 : Vec3::Zero();
+                           const Vec3 vi =
+                               m > 0 ? Vec3(v[i] + stepOverMass(0.5 * h, m) * f[i]) : Vec3::Zero();
                            const Vec3 xi = x[i] + h * vi;
                            v[i] = vi;
                            x[i] = xi;
@@ -97,8 +99,8 @@ NodePass verletKick(std::span<Vec3> v, std::span<const Vec3> f, std::span<const 
                    [&](std::int64_t begin, std::int64_t end, Partial& p) {
                        for (std::int64_t i = begin; i < end; ++i) {
                            const double m = mass[i];
-                           const Vec3 vi = m > 0 ? Vec3(v[i] + stepOverMass(0.5 * h, m) * f[i])
-                                                 : Vec3::Zero();
+                           const Vec3 vi =
+                               m > 0 ? Vec3(v[i] + stepOverMass(0.5 * h, m) * f[i]) : Vec3::Zero();
                            v[i] = vi;
                            account(p, m, Vec3::Zero(), vi);
                        }

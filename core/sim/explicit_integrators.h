@@ -19,16 +19,16 @@
 namespace resect {
 
 struct NodePass {
-    double kineticEnergy = 0;  ///< g mm^2 / s^2
-    double maxSpeed = 0;       ///< mm / s
+    double kineticEnergy = 0; ///< g mm^2 / s^2
+    double maxSpeed = 0;      ///< mm / s
     bool finite = true;
 };
 
 /// x, v, f, mass: #nodes. backupX, backupV: #nodes or empty. f is consumed: it is left zero,
 /// ready for the next step's forces (saving the caller a pass over it).
 NodePass symplecticEulerUpdate(std::span<Vec3> x, std::span<Vec3> v, std::span<Vec3> f,
-                               std::span<const double> mass, double h,
-                               std::span<Vec3> backupX, std::span<Vec3> backupV, int threads);
+                               std::span<const double> mass, double h, std::span<Vec3> backupX,
+                               std::span<Vec3> backupV, int threads);
 
 /// Verlet's opening kick and drift: v += h/2 f / m; x += h v.
 NodePass verletKickDrift(std::span<Vec3> x, std::span<Vec3> v, std::span<const Vec3> f,

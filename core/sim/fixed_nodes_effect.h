@@ -15,8 +15,8 @@
 namespace resect {
 
 struct FixedSelection {
-    std::vector<int> nodes;  ///< anchored nodes (used when box is not set)
-    std::optional<std::array<Vec3, 2>> box;  ///< (lo, hi), in reference coordinates
+    std::vector<int> nodes;                 ///< anchored nodes (used when box is not set)
+    std::optional<std::array<Vec3, 2>> box; ///< (lo, hi), in reference coordinates
 };
 
 class FixedNodesEffect : public Effect {
@@ -38,8 +38,8 @@ private:
     void anchor(const TetMesh& mesh, int node);
 
     FixedSelection m_selection;
-    std::vector<int> m_nodes;      ///< sorted
-    std::vector<Vec3> m_anchors;   ///< per entry of m_nodes
+    std::vector<int> m_nodes;    ///< sorted
+    std::vector<Vec3> m_anchors; ///< per entry of m_nodes
 };
 
 } // namespace resect

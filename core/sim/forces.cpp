@@ -2,12 +2,12 @@
 
 #include <algorithm>
 
-#include <emmintrin.h>  // SSE2, part of every x86-64 target
+#include <emmintrin.h> // SSE2, part of every x86-64 target
 
 namespace resect {
 namespace {
 
-using Lanes = Eigen::Array2d;  ///< two terms at once (SSE2)
+using Lanes = Eigen::Array2d; ///< two terms at once (SSE2)
 
 /// Gradients of the tet volume (times 6): g_i = d(6V)/dp_i, and 6V itself.
 struct VolumeGradient {
@@ -38,9 +38,9 @@ inline AreaGradient areaGradient(const Vec3& p0, const Vec3& p1, const Vec3& p2)
     const Vec3 n = (p1 - p0).cross(p2 - p0);
     const double n2 = n.norm();
     AreaGradient r;
-    r.area = 0.5 * n2;  // restTriangleArea
+    r.area = 0.5 * n2; // restTriangleArea
     r.defined = n2 > 0;
-    const Vec3 h = r.defined ? Vec3(n * (0.5 / n2)) : Vec3::Zero();  // one division, not three
+    const Vec3 h = r.defined ? Vec3(n * (0.5 / n2)) : Vec3::Zero(); // one division, not three
     r.a0 = h.cross(p2 - p1);
     r.a1 = h.cross(p0 - p2);
     r.a2 = h.cross(p1 - p0);
@@ -51,11 +51,11 @@ inline AreaGradient areaGradient(const Vec3& p0, const Vec3& p1, const Vec3& p2)
 
 double restEdgeLength(const Vec3& a, const Vec3& b) {
     const double dx = b.x() - a.x(), dy = b.y() - a.y(), dz = b.z() - a.z();
-    return std::sqrt(dx * dx + dy * dy + dz * dz);  // the arithmetic of addEdgeForces
+    return std::sqrt(dx * dx + dy * dy + dz * dz); // the arithmetic of addEdgeForces
 }
 
 double restTetVolume6(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
-    return volumeGradient(p0, p1, p2, p3).volume6;  // the arithmetic of addVolumeForces
+    return volumeGradient(p0, p1, p2, p3).volume6; // the arithmetic of addVolumeForces
 }
 
 double restTriangleArea(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
@@ -142,8 +142,7 @@ double addVolumeForces(std::span<const Tet> tets, std::span<const double> restVo
 }
 
 double addAreaForces(std::span<const Tri> triangles, std::span<const double> restArea,
-                     std::span<const double> stiffness, std::span<const Vec3> x,
-                     ForceWindow f) {
+                     std::span<const double> stiffness, std::span<const Vec3> x, ForceWindow f) {
     double energy = 0;
     for (std::size_t i = 0; i < triangles.size(); ++i) {
         const Tri& q = triangles[i];
@@ -181,14 +180,13 @@ void addEdgeForceDifferential(std::span<const Edge> edges, std::span<const doubl
 }
 
 void addVolumeForceDifferential(std::span<const Tet> tets, std::span<const double> stiffness36,
-                                std::span<const Vec3> x, std::span<const Vec3> dx,
-                                ForceWindow df) {
+                                std::span<const Vec3> x, std::span<const Vec3> dx, ForceWindow df) {
     for (std::size_t t = 0; t < tets.size(); ++t) {
         const Tet& q = tets[t];
         const VolumeGradient g = volumeGradient(x[q[0]], x[q[1]], x[q[2]], x[q[3]]);
         // df_i = -k_v (dV/dp_i) (dV/dx . dx) = -k36 g_i (g . dx)
-        const double gdx = g.g0.dot(dx[q[0]]) + g.g1.dot(dx[q[1]]) + g.g2.dot(dx[q[2]]) +
-                           g.g3.dot(dx[q[3]]);
+        const double gdx =
+            g.g0.dot(dx[q[0]]) + g.g1.dot(dx[q[1]]) + g.g2.dot(dx[q[2]]) + g.g3.dot(dx[q[3]]);
         const double c = -stiffness36[t] * gdx;
         df[q[0]] += c * g.g0;
         df[q[1]] += c * g.g1;
@@ -198,8 +196,7 @@ void addVolumeForceDifferential(std::span<const Tet> tets, std::span<const doubl
 }
 
 void addAreaForceDifferential(std::span<const Tri> triangles, std::span<const double> stiffness,
-                              std::span<const Vec3> x, std::span<const Vec3> dx,
-                              ForceWindow df) {
+                              std::span<const Vec3> x, std::span<const Vec3> dx, ForceWindow df) {
     for (std::size_t i = 0; i < triangles.size(); ++i) {
         const Tri& q = triangles[i];
         const AreaGradient g = areaGradient(x[q[0]], x[q[1]], x[q[2]]);

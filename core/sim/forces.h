@@ -63,25 +63,21 @@ double addEdgeForces(std::span<const Edge> edges, std::span<const double> restLe
 
 /// Volume preservation. tets, restVolume6 (6 V0, signed), stiffness36 (k_v / 36): #tets.
 double addVolumeForces(std::span<const Tet> tets, std::span<const double> restVolume6,
-                       std::span<const double> stiffness36, std::span<const Vec3> x,
-                       ForceWindow f);
+                       std::span<const double> stiffness36, std::span<const Vec3> x, ForceWindow f);
 
 /// Surface-area preservation. triangles, restArea, stiffness: #triangles. A triangle of zero
 /// current area has no defined gradient and contributes its energy but no force.
 double addAreaForces(std::span<const Tri> triangles, std::span<const double> restArea,
-                     std::span<const double> stiffness, std::span<const Vec3> x,
-                     ForceWindow f);
+                     std::span<const double> stiffness, std::span<const Vec3> x, ForceWindow f);
 
 // --- force differentials df = (df/dx) dx (Gauss-Newton, see above) -----------------------
 void addEdgeForceDifferential(std::span<const Edge> edges, std::span<const double> restLength,
                               std::span<const double> stiffness, std::span<const Vec3> x,
                               std::span<const Vec3> dx, ForceWindow df);
 void addVolumeForceDifferential(std::span<const Tet> tets, std::span<const double> stiffness36,
-                                std::span<const Vec3> x, std::span<const Vec3> dx,
-                                ForceWindow df);
+                                std::span<const Vec3> x, std::span<const Vec3> dx, ForceWindow df);
 void addAreaForceDifferential(std::span<const Tri> triangles, std::span<const double> stiffness,
-                              std::span<const Vec3> x, std::span<const Vec3> dx,
-                              ForceWindow df);
+                              std::span<const Vec3> x, std::span<const Vec3> dx, ForceWindow df);
 
 /// diag += the diagonal of -(df/dx) (per node, per coordinate; for Jacobi preconditioning).
 void addEdgeStiffnessDiagonal(std::span<const Edge> edges, std::span<const double> restLength,

@@ -12,7 +12,7 @@ int resolveThreadCount(int requested) {
 #ifdef RESECT_HAVE_OPENMP
     return requested > 0 ? requested : omp_get_max_threads();
 #else
-    return requested > 0 ? requested : 1;  // run one after another: same results, no speed-up
+    return requested > 0 ? requested : 1; // run one after another: same results, no speed-up
 #endif
 }
 

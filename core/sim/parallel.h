@@ -24,7 +24,8 @@ inline int threadsFor(int threads, std::int64_t work, std::int64_t grain) {
     return static_cast<int>(std::max<std::int64_t>(1, std::min<std::int64_t>(threads, useful)));
 }
 
-/// Chunk t of [0, count) split into `threads` parts: [count * t / threads, count * (t+1) / threads).
+/// Chunk t of [0, count) split into `threads` parts: [count * t / threads, count * (t+1) /
+/// threads).
 inline std::int64_t chunkBegin(std::int64_t count, int threads, int t) {
     return count * t / threads;
 }

@@ -47,7 +47,9 @@ const char* integratorName(Integrator integrator) {
     return "?";
 }
 
-bool isExplicit(Integrator integrator) { return integrator != Integrator::BackwardEuler; }
+bool isExplicit(Integrator integrator) {
+    return integrator != Integrator::BackwardEuler;
+}
 
 Simulator::Simulator(TetMesh& mesh, const Material& material, const SimulatorOptions& options)
     : m_mesh(mesh), m_material(material), m_options(options),
@@ -118,7 +120,9 @@ double Simulator::stableTimeStep() {
     return m_fallbackStableDt;
 }
 
-double Simulator::timeStep() { return m_options.dt > 0 ? m_options.dt : stableTimeStep(); }
+double Simulator::timeStep() {
+    return m_options.dt > 0 ? m_options.dt : stableTimeStep();
+}
 
 SimState Simulator::state(double h) {
     SimState s;
@@ -133,7 +137,7 @@ SimState Simulator::state(double h) {
 void Simulator::ensureBuffers() {
     const auto n = static_cast<std::size_t>(m_mesh.nodeCount());
     if (m_force.size() != n) {
-        m_force.resize(n, Vec3::Zero());  // new entries zero: m_forceZero stays true
+        m_force.resize(n, Vec3::Zero()); // new entries zero: m_forceZero stays true
         m_forcesValid = false;
     }
     if (m_options.keepLastGoodState) {
@@ -228,14 +232,17 @@ Status Simulator::implicitStep(const SimState& s, double h, NodePass& pass, doub
         for (std::size_t i = 0; i < n; ++i)
             out[i] += s.mass[i] > 0 ? Vec3(in[i] - m_tmp[i]) : Vec3(in[i] - out[i]);
     };
-    const LinearSolve solve = solveConjugateGradient(apply, m_diag, m_rhs, m_dv, m_options.implicit);
+    const LinearSolve solve =
+        solveConjugateGradient(apply, m_diag, m_rhs, m_dv, m_options.implicit);
     m_last.solverIterations = solve.iterations;
     constrainAll(m_dv, true);
     pass = velocityChangeUpdate(s.x, s.v, m_dv, s.mass, h, m_backupX, m_backupV, nodeThreads());
     return Status::success();
 }
 
-Status Simulator::step() { return step(timeStep()); }
+Status Simulator::step() {
+    return step(timeStep());
+}
 
 Status Simulator::step(double h) {
     if (!std::isfinite(h) || !(h > 0))
@@ -267,7 +274,8 @@ Status Simulator::step(double h) {
     switch (m_options.integrator) {
     case Integrator::SymplecticEuler:
         potential = evaluateForces(s, m_force, m_forceZero);
-        pass = symplecticEulerUpdate(s.x, s.v, m_force, s.mass, h, m_backupX, m_backupV, nodeThreads());
+        pass = symplecticEulerUpdate(s.x, s.v, m_force, s.mass, h, m_backupX, m_backupV,
+                                     nodeThreads());
         m_forcesValid = false;
         m_forceZero = true;
         break;
@@ -275,7 +283,8 @@ Status Simulator::step(double h) {
         m_forceZero = false;
         if (!m_forcesValid)
             m_forcePotential = evaluateForces(s, m_force);
-        const NodePass drift = verletKickDrift(s.x, s.v, m_force, s.mass, h, m_backupX, m_backupV, nodeThreads());
+        const NodePass drift =
+            verletKickDrift(s.x, s.v, m_force, s.mass, h, m_backupX, m_backupV, nodeThreads());
         potential = evaluateForces(s, m_force);
         pass = verletKick(s.v, m_force, s.mass, h, nodeThreads());
         pass.finite = pass.finite && drift.finite;
@@ -304,8 +313,7 @@ Status Simulator::step(double h) {
             if (h <= stable)
                 message += ", which holds for small deformations: strongly deformed tissue "
                            "needs a margin (0.8 x the estimate) or the implicit integrator";
-        }
-        else
+        } else
             message += "the implicit step " + format(h) + " s did not stay bounded (" +
                        std::to_string(m_last.solverIterations) + " solver iterations)";
         if (m_options.keepLastGoodState) {

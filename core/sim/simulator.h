@@ -53,11 +53,11 @@ bool isExplicit(Integrator integrator);
 
 struct SimulatorOptions {
     Integrator integrator = Integrator::SymplecticEuler;
-    double dt = 0;     ///< s; 0: the stable explicit time step (stableTimeStep())
-    int threads = 0;   ///< 0: resolveThreadCount's default
-    int grain = 4096;  ///< fewer threads when one would get fewer nodes or terms (parallel.h)
+    double dt = 0;    ///< s; 0: the stable explicit time step (stableTimeStep())
+    int threads = 0;  ///< 0: resolveThreadCount's default
+    int grain = 4096; ///< fewer threads when one would get fewer nodes or terms (parallel.h)
     double explosionFactor = 100;
-    bool keepLastGoodState = true;  ///< back up the state in every step (see above)
+    bool keepLastGoodState = true; ///< back up the state in every step (see above)
     BackwardEulerOptions implicit;
 };
 
@@ -67,12 +67,12 @@ struct EffectTime {
 };
 
 struct StepReport {
-    std::vector<EffectTime> effects;  ///< per effect, in run order: this step
-    double integrateMs = 0;           ///< node passes and solver, outside the effects
-    double kineticEnergy = 0;         ///< after the step
-    double potentialEnergy = 0;       ///< at the last force evaluation
-    double maxSpeed = 0;              ///< mm/s, after the step
-    int solverIterations = 0;         ///< conjugate-gradient iterations (implicit only)
+    std::vector<EffectTime> effects; ///< per effect, in run order: this step
+    double integrateMs = 0;          ///< node passes and solver, outside the effects
+    double kineticEnergy = 0;        ///< after the step
+    double potentialEnergy = 0;      ///< at the last force evaluation
+    double maxSpeed = 0;             ///< mm/s, after the step
+    int solverIterations = 0;        ///< conjugate-gradient iterations (implicit only)
 };
 
 class Simulator {
@@ -142,8 +142,8 @@ private:
     SimulatorOptions m_options;
     int m_threads = 1;
     std::vector<std::unique_ptr<Effect>> m_effects;
-    std::vector<double> m_effectMs;         ///< this step, per effect
-    std::vector<double> m_effectPotential;  ///< at the last force evaluation, per effect
+    std::vector<double> m_effectMs;        ///< this step, per effect
+    std::vector<double> m_effectPotential; ///< at the last force evaluation, per effect
     StepReport m_last;
     std::vector<EffectTime> m_total;
     double m_integrateMsTotal = 0;
@@ -152,9 +152,9 @@ private:
 
     std::vector<Vec3> m_force, m_backupX, m_backupV;
     std::vector<Vec3> m_rhs, m_dv, m_diag, m_tmp, m_kd, m_dd;
-    bool m_forcesValid = false;   ///< m_force holds the forces at the current state (Verlet)
-    bool m_forceZero = false;     ///< m_force is all zero (left so by symplectic Euler)
-    double m_forcePotential = 0;  ///< potential energy of m_force's evaluation
+    bool m_forcesValid = false;  ///< m_force holds the forces at the current state (Verlet)
+    bool m_forceZero = false;    ///< m_force is all zero (left so by symplectic Euler)
+    double m_forcePotential = 0; ///< potential energy of m_force's evaluation
     bool m_needReference = true;
     double m_referenceEnergy = 0, m_energyScale = 0;
     double m_fallbackStableDt = 0;

@@ -10,8 +10,8 @@
 // friction; the tool's velocity comes from its last two poses). Projection needs no contact
 // stiffness, so it does not lower the stable time step, it never lets a surface node stay
 // inside the tool whatever the tool's speed, and a deep initial overlap is resolved without
-// turning the position jump into velocity. Interior nodes are not tested: the tissue is only reached
-// through its surface. Cost per step: O(surface nodes within the tool's bounding box x
+// turning the position jump into velocity. Interior nodes are not tested: the tissue is only
+// reached through its surface. Cost per step: O(surface nodes within the tool's bounding box x
 // segments).
 
 #include "core/sim/effect.h"
@@ -22,8 +22,8 @@
 namespace resect {
 
 struct Tool {
-    std::vector<Vec3> points;  ///< the polyline (mm), at least one point
-    double radius = 0;         ///< mm, > 0
+    std::vector<Vec3> points; ///< the polyline (mm), at least one point
+    double radius = 0;        ///< mm, > 0
 };
 
 /// Empty message if the tool is usable: >= 1 finite point, finite radius > 0.
@@ -54,7 +54,7 @@ private:
     void setSurface(int node, bool surface);
 
     Tool m_tool;
-    std::vector<Vec3> m_previous;  ///< the pose at the end of the last step (tool velocity)
+    std::vector<Vec3> m_previous; ///< the pose at the end of the last step (tool velocity)
     std::vector<int> m_surface;   ///< surface nodes
     std::vector<int> m_position;  ///< #nodes: index in m_surface, or -1
     int m_lastContacts = 0;

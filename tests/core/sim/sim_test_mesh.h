@@ -16,8 +16,8 @@ inline TetMesh simBox(int nx, int ny, int nz, double jitter = 0.2, unsigned seed
     std::uniform_real_distribution<double> u(-jitter, jitter);
     for (int n = 0; n < m.nodeCount(); ++n) {
         const Vec3 p = m.ref(n);
-        const bool interior = p.x() > 0 && p.y() > 0 && p.z() > 0 && p.x() < nx && p.y() < ny &&
-                              p.z() < nz;
+        const bool interior =
+            p.x() > 0 && p.y() > 0 && p.z() > 0 && p.x() < nx && p.y() < ny && p.z() < nz;
         if (interior) {
             m.referencePositions()[n] += Vec3(u(rng), u(rng), u(rng));
             m.positions()[n] = m.ref(n);

@@ -45,7 +45,7 @@ EffectSettings sceneSettings() {
 std::unique_ptr<Simulator> scene(TetMesh& m, int threads) {
     SimulatorOptions o;
     o.threads = threads;
-    o.grain = 1;  // threaded even on this small mesh: the thread windows must follow the cut
+    o.grain = 1; // threaded even on this small mesh: the thread windows must follow the cut
     auto sim = std::make_unique<Simulator>(m, Material{}, o);
     for (const char* name : {"deformation", "gravity", "fixed", "tool-contact"})
         if (Status st = sim->addEffect(name, sceneSettings()); !st.ok())
@@ -99,7 +99,9 @@ private slots:
             QVERIFY2(static_cast<int>(changed.edgeSlots.size()) <= 8 * touched &&
                          static_cast<int>(changed.triangleSlots.size()) <= 12 * touched &&
                          static_cast<int>(changed.tets.size()) <= 24 * touched,
-                     qPrintable(QString("%1 edge slots for %2 touched nodes").arg(changed.edgeSlots.size()).arg(touched)));
+                     qPrintable(QString("%1 edge slots for %2 touched nodes")
+                                    .arg(changed.edgeSlots.size())
+                                    .arg(touched)));
 
             TetMesh copy = m;
             auto fresh = scene(copy, threads);
@@ -123,13 +125,18 @@ private slots:
                 scale = std::max(scale, ff[i].norm());
                 worst = std::max(worst, (fi[i] - ff[i]).norm());
             }
-            QVERIFY2(worst <= 1e-12 * scale, qPrintable(QString("cut %1: force difference %2 of %3").arg(cuts).arg(worst).arg(scale)));
+            QVERIFY2(
+                worst <= 1e-12 * scale,
+                qPrintable(
+                    QString("cut %1: force difference %2 of %3").arg(cuts).arg(worst).arg(scale)));
             QVERIFY(std::abs(ei - ef) <= 1e-12 * std::abs(ef) + 1e-12);
             // Same anchors and surface nodes.
             QCOMPARE(static_cast<FixedNodesEffect*>(sim->findEffect("fixed"))->nodes(),
                      static_cast<FixedNodesEffect*>(fresh->findEffect("fixed"))->nodes());
-            QCOMPARE(sorted(static_cast<ToolContactEffect*>(sim->findEffect("tool-contact"))->surfaceNodes()),
-                     sorted(static_cast<ToolContactEffect*>(fresh->findEffect("tool-contact"))->surfaceNodes()));
+            QCOMPARE(sorted(static_cast<ToolContactEffect*>(sim->findEffect("tool-contact"))
+                                ->surfaceNodes()),
+                     sorted(static_cast<ToolContactEffect*>(fresh->findEffect("tool-contact"))
+                                ->surfaceNodes()));
             // Same motion afterwards.
             for (int s = 0; s < 10; ++s) {
                 QVERIFY(sim->step().ok());
@@ -159,7 +166,11 @@ private slots:
             QVERIFY(sim->addEffect(name, s).ok());
         HybridCutter cutter(m);
         CutResult result;
-        QVERIFY(cutter.cut(quad(Vec3(-1, -1, 2.43), Vec3(5, -1, 2.51), Vec3(-1, 5, 2.47), Vec3(5, 5, 2.55)), CutOptions{}, result).ok());
+        QVERIFY(cutter
+                    .cut(quad(Vec3(-1, -1, 2.43), Vec3(5, -1, 2.51), Vec3(-1, 5, 2.47),
+                              Vec3(5, 5, 2.55)),
+                         CutOptions{}, result)
+                    .ok());
         sim->applyCut(result.changes);
         QCOMPARE(connectedComponents(m).count, 2);
         const double dt = sim->stableTimeStep();

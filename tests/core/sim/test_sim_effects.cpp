@@ -50,7 +50,9 @@ Status run(Simulator& sim, int steps) {
     return Status::success();
 }
 
-std::vector<Vec3> positions(const TetMesh& m) { return {m.positions().begin(), m.positions().end()}; }
+std::vector<Vec3> positions(const TetMesh& m) {
+    return {m.positions().begin(), m.positions().end()};
+}
 
 /// Adds a constant force per unit mass along +x: a minimal effect registered from outside.
 class WindEffect : public Effect {
@@ -100,7 +102,8 @@ private slots:
         TetMesh m = simBox(4, 3, 2);
         auto sim = make(m, {"deformation"});
         QVERIFY(run(*sim, 200).ok());
-        QVERIFY(positions(m) == std::vector<Vec3>(m.referencePositions().begin(), m.referencePositions().end()));
+        QVERIFY(positions(m) ==
+                std::vector<Vec3>(m.referencePositions().begin(), m.referencePositions().end()));
         QVERIFY(sim->findEffect("gravity") == nullptr);
     }
 
@@ -128,7 +131,8 @@ private slots:
         else
             settings.fixed.nodes = anchored;
         settings.damping = 200.0;
-        auto sim = make(m, {"deformation", "gravity", "fixed", "damping"}, settings, integrator, dtFactor);
+        auto sim =
+            make(m, {"deformation", "gravity", "fixed", "damping"}, settings, integrator, dtFactor);
         QCOMPARE(static_cast<FixedNodesEffect*>(sim->findEffect("fixed"))->nodes(), anchored);
         const auto x0 = positions(m);
         const Status st = run(*sim, 400);
@@ -183,8 +187,10 @@ private slots:
             pushed += tool->lastContacts();
             for (int n : surface) {
                 const double d = (m.pos(n) - tool->closestPoint(m.pos(n))).norm();
-                QVERIFY2(d >= settings.tool.radius * (1 - 1e-12),
-                         qPrintable(QString("step %1: node %2 at %3 inside the tool").arg(s).arg(n).arg(d)));
+                QVERIFY2(
+                    d >= settings.tool.radius * (1 - 1e-12),
+                    qPrintable(
+                        QString("step %1: node %2 at %3 inside the tool").arg(s).arg(n).arg(d)));
             }
         }
         QVERIFY(pushed > 0);
@@ -195,7 +201,9 @@ private slots:
                 lowest = std::min(lowest, m.pos(n).z());
         QVERIFY2(lowest < 1.25, qPrintable(QString::number(lowest)));
         QCOMPARE(resect::testing::countInvertedTets(m), 0);
-        QVERIFY(tool->setPose(std::vector<Vec3>{Vec3::Zero()}).message().find("expected 2 points") != std::string::npos);
+        QVERIFY(
+            tool->setPose(std::vector<Vec3>{Vec3::Zero()}).message().find("expected 2 points") !=
+            std::string::npos);
     }
 
     void noContactWhenNotAsked() {
@@ -225,7 +233,7 @@ private slots:
             for (int i = 0; i < m.nodeCount(); ++i)
                 m.positions()[i].x() = 3 + 1.01 * (m.ref(i).x() - 3);
             EffectSettings settings;
-            settings.damping = 100.0;  // 1/s: e-folding of the kinetic energy in 5 ms
+            settings.damping = 100.0; // 1/s: e-folding of the kinetic energy in 5 ms
             auto sim = damped ? make(m, {"deformation", "damping"}, settings, integrator, dtFactor)
                               : make(m, {"deformation"}, settings, integrator, dtFactor);
             const double e0 = sim->totalEnergy();
@@ -280,11 +288,16 @@ private slots:
     void registryRejectsBadDeclarations_data() {
         QTest::addColumn<QString>("list");
         QTest::addColumn<QString>("message");
-        QTest::newRow("unknown") << "deformation,wobble" << "unknown effect 'wobble'";
-        QTest::newRow("twice") << "gravity,gravity" << "given twice";
-        QTest::newRow("empty item") << "gravity,,fixed" << "empty effect name";
-        QTest::newRow("trailing comma") << "gravity," << "empty";
-        QTest::newRow("empty") << "" << "empty";
+        QTest::newRow("unknown") << "deformation,wobble"
+                                 << "unknown effect 'wobble'";
+        QTest::newRow("twice") << "gravity,gravity"
+                               << "given twice";
+        QTest::newRow("empty item") << "gravity,,fixed"
+                                    << "empty effect name";
+        QTest::newRow("trailing comma") << "gravity,"
+                                        << "empty";
+        QTest::newRow("empty") << ""
+                               << "empty";
     }
     void registryRejectsBadDeclarations() {
         QFETCH(QString, list);
@@ -302,7 +315,8 @@ private slots:
         QVERIFY(sim.addEffect("fixed", s).message().find("nodes or a box") != std::string::npos);
         s.fixed.nodes = {m.nodeCount()};
         QVERIFY(sim.addEffect("fixed", s).message().find("not in the mesh") != std::string::npos);
-        QVERIFY(sim.addEffect("tool-contact", s).message().find("at least one point") != std::string::npos);
+        QVERIFY(sim.addEffect("tool-contact", s).message().find("at least one point") !=
+                std::string::npos);
         s.tool.points = {Vec3::Zero()};
         s.tool.radius = -1;
         QVERIFY(sim.addEffect("tool-contact", s).message().find("radius") != std::string::npos);
@@ -316,7 +330,8 @@ private slots:
 
     void registryTakesNewEffects() {
         EffectRegistry registry = EffectRegistry::withBuiltins();
-        registry.add("wind", [](const TetMesh&, const Material&, const EffectSettings& s, std::unique_ptr<Effect>& out) {
+        registry.add("wind", [](const TetMesh&, const Material&, const EffectSettings& s,
+                                std::unique_ptr<Effect>& out) {
             out = std::make_unique<WindEffect>(s.extra.count("wind") ? s.extra.at("wind") : 1000.0);
             return Status::success();
         });

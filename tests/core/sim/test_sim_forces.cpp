@@ -62,7 +62,7 @@ private slots:
         QFETCH(int, threads);
         TetMesh m = simBox(2, 2, 2, 0.2, 3);
         perturb(m, 0.15);
-        DeformationEffect e(m, Material{}, {only(terms), threads, 1});  // grain 1: really threaded
+        DeformationEffect e(m, Material{}, {only(terms), threads, 1}); // grain 1: really threaded
         DeformationEffect serial(m, Material{}, {only(terms), 1, 1});  // for the many energies
         std::vector<Vec3> x(m.positions().begin(), m.positions().end());
         const std::vector<Vec3> f = forcesAt(e, x);
@@ -78,7 +78,8 @@ private slots:
                 const double g = (serial.energy(xp) - serial.energy(xm)) / (2 * eps);
                 worst = std::max(worst, std::abs(f[i][c] + g));
             }
-        QVERIFY2(worst < 1e-5 * scale, qPrintable(QString("|f + dE/dx| = %1, |f| = %2").arg(worst).arg(scale)));
+        QVERIFY2(worst < 1e-5 * scale,
+                 qPrintable(QString("|f + dE/dx| = %1, |f| = %2").arg(worst).arg(scale)));
     }
 
     void differentialIsHessianAtRest_data() {
@@ -111,7 +112,8 @@ private slots:
         double worst = 0;
         for (std::size_t i = 0; i < x.size(); ++i)
             worst = std::max(worst, (df[i] - (fp[i] - fm[i]) / (2 * eps)).norm());
-        QVERIFY2(worst < 1e-6 * maxNorm(df), qPrintable(QString("%1 vs %2").arg(worst).arg(maxNorm(df))));
+        QVERIFY2(worst < 1e-6 * maxNorm(df),
+                 qPrintable(QString("%1 vs %2").arg(worst).arg(maxNorm(df))));
     }
 
     void differentialIsSymmetricNegativeSemiDefinite() {
@@ -137,14 +139,16 @@ private slots:
             aka += a[i].dot(ka[i]);
             scale += std::abs(a[i].dot(ka[i]));
         }
-        QVERIFY2(std::abs(bka - akb) < 1e-12 * scale, qPrintable(QString("%1 vs %2").arg(bka).arg(akb)));
+        QVERIFY2(std::abs(bka - akb) < 1e-12 * scale,
+                 qPrintable(QString("%1 vs %2").arg(bka).arg(akb)));
         QVERIFY(aka <= 0);
         // The diagonal the preconditioner uses is the diagonal of -K.
         std::vector<Vec3> diag(m.nodeCount(), Vec3::Zero());
         e.addSystemDiagonal(s, 1.0, diag);
         for (int i : {0, 7, m.nodeCount() - 1})
             for (int c = 0; c < 3; ++c) {
-                std::vector<Vec3> unit(m.nodeCount(), Vec3::Zero()), col(m.nodeCount(), Vec3::Zero());
+                std::vector<Vec3> unit(m.nodeCount(), Vec3::Zero()),
+                    col(m.nodeCount(), Vec3::Zero());
                 unit[i][c] = 1;
                 e.addForceDifferential(s, unit, col);
                 QVERIFY(std::abs(diag[i][c] + col[i][c]) <= 1e-12 * diag[i][c]);
@@ -173,7 +177,8 @@ private slots:
             const auto [a, b] = model.edges()[s];
             const double l0 = (m.ref(a) - m.ref(b)).norm();
             QVERIFY(std::abs(model.edgeRestLength()[s] - l0) < 1e-15 * l0);
-            QVERIFY(std::abs(model.edgeStiffness()[s] - mat.stiffness * (mass[a] + mass[b]) / (l0 * l0)) <
+            QVERIFY(std::abs(model.edgeStiffness()[s] -
+                             mat.stiffness * (mass[a] + mass[b]) / (l0 * l0)) <
                     1e-12 * model.edgeStiffness()[s]);
         }
         for (int t = 0; t < m.tetCount(); ++t) {
@@ -187,7 +192,8 @@ private slots:
         }
         for (std::size_t s = 0; s < model.triangles().size(); ++s) {
             const Tri& q = model.triangles()[s];
-            const double a0 = 0.5 * (m.ref(q[1]) - m.ref(q[0])).cross(m.ref(q[2]) - m.ref(q[0])).norm();
+            const double a0 =
+                0.5 * (m.ref(q[1]) - m.ref(q[0])).cross(m.ref(q[2]) - m.ref(q[0])).norm();
             QVERIFY(std::abs(model.triangleStiffness()[s] -
                              mat.stiffness * (mass[q[0]] + mass[q[1]] + mass[q[2]]) / (a0 * a0)) <
                     1e-12 * model.triangleStiffness()[s]);
@@ -236,7 +242,7 @@ private slots:
         const StableTimeStep b = stableTimeStep(m, Material{});
         QVERIFY(a.lambdaMax >= b.lambdaMax * (1 - 1e-6));
         QVERIFY(a.lambdaMax <= a.gershgorinBound);
-        QVERIFY(a.dt > 0.5 * b.dt);  // the area term is of the same order as the others
+        QVERIFY(a.dt > 0.5 * b.dt); // the area term is of the same order as the others
     }
 };
 

@@ -97,10 +97,11 @@ private slots:
                 }
             }
             const double drift = (last - first) / n / e0;
-            qInfo("Verlet, 5000 steps at %.2f x the stable dt: max |E - E0| / E0 = %.3g, drift of the mean %.2g",
+            qInfo("Verlet, 5000 steps at %.2f x the stable dt: max |E - E0| / E0 = %.3g, drift of "
+                  "the mean %.2g",
                   factors[k], worst[k], drift);
             QVERIFY2(std::abs(drift) < 0.01, qPrintable(QString::number(drift)));
-            QVERIFY(sim->lastStep().kineticEnergy > 0);  // it did move
+            QVERIFY(sim->lastStep().kineticEnergy > 0); // it did move
         }
         QVERIFY2(worst[0] < 0.15, qPrintable(QString::number(worst[0])));
         QVERIFY2(worst[1] < 0.04, qPrintable(QString::number(worst[1])));
@@ -122,7 +123,8 @@ private slots:
             int s = 0;
             for (; s < 10000 && st.ok(); ++s)
                 st = sim->step();
-            qInfo("5 %% stretch at the estimate: %s after %d steps", st.ok() ? "bounded" : "diverged", s);
+            qInfo("5 %% stretch at the estimate: %s after %d steps",
+                  st.ok() ? "bounded" : "diverged", s);
         }
         TetMesh m = stretchedBox(0.10);
         auto sim = deformable(m, Integrator::VelocityVerlet, 0.8);
@@ -134,7 +136,8 @@ private slots:
             if (s % 50 == 0)
                 worst = std::max(worst, std::abs(sim->totalEnergy() - e0) / e0);
         }
-        qInfo("10 %% stretch at 0.8 x the estimate: max |E - E0| / E0 = %.3g over 10000 steps", worst);
+        qInfo("10 %% stretch at 0.8 x the estimate: max |E - E0| / E0 = %.3g over 10000 steps",
+              worst);
         QVERIFY(worst < 0.15);
         QCOMPARE(countInvertedTets(m), 0);
     }
@@ -206,7 +209,8 @@ private slots:
             increases += e > previous * (1 + 1e-9);
             previous = e;
         }
-        qInfo("backward Euler at 10x the stable dt: E %.4g -> %.4g, max %.4g, %d increases, %d CG iterations in the last step",
+        qInfo("backward Euler at 10x the stable dt: E %.4g -> %.4g, max %.4g, %d increases, %d CG "
+              "iterations in the last step",
               e0, previous, emax, increases, sim->lastStep().solverIterations);
         QVERIFY(emax <= e0 * (1 + 1e-6));
         QVERIFY(previous < 0.1 * e0);
@@ -226,11 +230,11 @@ private slots:
             }
             results.emplace_back(m.positions().begin(), m.positions().end());
         }
-        QVERIFY(results[0] == results[1]);  // bit-identical
+        QVERIFY(results[0] == results[1]); // bit-identical
         double diff = 0;
         for (std::size_t i = 0; i < results[0].size(); ++i)
             diff = std::max(diff, (results[0][i] - results[2][i]).norm());
-        QVERIFY2(diff < 1e-9, qPrintable(QString::number(diff)));  // rounding only
+        QVERIFY2(diff < 1e-9, qPrintable(QString::number(diff))); // rounding only
     }
 };
 
