@@ -125,14 +125,7 @@ Status replay(ReplayPlan plan, ReplayOutcome& out, const ReplayProgress& progres
         CutResult result;
         if (Status s = cutter.cut(stroke.sweep, plan.cut, result); !s.ok())
             return Status::error(stroke.name + ": the cut failed: " + s.message());
-        const CutStats& c = result.stats;
-        CutStats& t = out.cutTotals;
-        t.cutEdges += c.cutEdges;
-        t.cutNodes += c.cutNodes;
-        t.decomposedTets += c.decomposedTets;
-        t.snappedNodes += c.snappedNodes;
-        t.separatedTets += c.separatedTets;
-        t.timeMs.total += c.timeMs.total;
+        out.cutTotals += result.stats;
         sim.applyCut(result.changes);
         EmbeddedCut ec;
         if (Status s = embedded.cut(mesh, result.changes, stroke.sweep, &ec); !s.ok())

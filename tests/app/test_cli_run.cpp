@@ -27,13 +27,6 @@ using namespace resect::testing;
 
 namespace {
 
-QJsonObject readJson(const QString& path) {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return {};
-    return QJsonDocument::fromJson(f.readAll()).object();
-}
-
 void writeJsonFile(const QString& path, const QJsonObject& o) {
     QFile f(path);
     if (!f.open(QIODevice::WriteOnly))
@@ -43,7 +36,7 @@ void writeJsonFile(const QString& path, const QJsonObject& o) {
 
 /// The bundled polyp scenario, sped up, written to `dir`; `edit` changes it further.
 QString fastPolyp(const QString& dir, const std::function<void(QJsonObject&)>& edit = {}) {
-    QJsonObject s = readJson(QString(RESECT_SOURCE_DIR) + "/resources/scenarios/polyp-resection.json");
+    QJsonObject s = readJsonFile(QString(RESECT_SOURCE_DIR) + "/resources/scenarios/polyp-resection.json");
     QJsonArray strokes = s["strokes"].toArray();
     for (int i = 0; i < strokes.size(); ++i) {
         QJsonObject stroke = strokes[i].toObject();
@@ -81,7 +74,7 @@ private slots:
         QVERIFY(a.out.contains("PASS pieces_at_least"));
         const Run b = runCli({"run", scenario, "--report", dir.filePath("b.json")});
         QCOMPARE(b.code, 0);
-        const QJsonObject ra = readJson(dir.filePath("a.json")), rb = readJson(dir.filePath("b.json"));
+        const QJsonObject ra = readJsonFile(dir.filePath("a.json")), rb = readJsonFile(dir.filePath("b.json"));
         QVERIFY(ra["passed"].toBool());
         const QJsonObject tissue = ra["tissues"].toArray()[0].toObject();
         QVERIFY(tissue["pieces"].toInt() >= 2);
@@ -137,7 +130,7 @@ private slots:
         const Run e = runCli({"export", scenario, "--out", out});
         QVERIFY2(e.code == 0, qPrintable(e.out + e.err));
         // The manifest lists every other file with its size and hash.
-        const QJsonObject manifest = readJson(out + "/manifest.json");
+        const QJsonObject manifest = readJsonFile(out + "/manifest.json");
         QStringList listed;
         for (const QJsonValue& v : manifest["files"].toArray()) {
             const QJsonObject f = v.toObject();
@@ -168,8 +161,8 @@ private slots:
         // The package replays to the recorded result.
         const Run r = runCli({"run", out + "/scenario.json", "--report", dir.filePath("replayed.json")});
         QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
-        QJsonObject recorded = stripTimings(readJson(out + "/result/report.json"));
-        QJsonObject replayed = stripTimings(readJson(dir.filePath("replayed.json")));
+        QJsonObject recorded = stripTimings(readJsonFile(out + "/result/report.json"));
+        QJsonObject replayed = stripTimings(readJsonFile(dir.filePath("replayed.json")));
         recorded.remove("scenario");
         replayed.remove("scenario");
         QCOMPARE(replayed, recorded);

@@ -18,16 +18,10 @@
 using namespace resect;
 using resect::testing::Run;
 using resect::testing::runCli;
+using resect::testing::readJsonFile;
 using resect::testing::sha256;
 
 namespace {
-
-QJsonObject readJson(const QString& path) {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return {};
-    return QJsonDocument::fromJson(f.readAll()).object();
-}
 
 QStringList effectNames(const QJsonObject& report) {
     QStringList names;
@@ -61,7 +55,7 @@ private slots:
                               "3", "--out", path("bent.vtu"), "--report", path("bent.json")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QCOMPARE(sha256(path("bar.vtu")), before);
-        const QJsonObject rep = readJson(path("bent.json"));
+        const QJsonObject rep = readJsonFile(path("bent.json"));
         for (const char* key : {"steps", "dt", "stable_dt", "integrator", "effects", "finite",
                                 "max_speed", "kinetic_energy", "inverted"})
             QVERIFY2(rep.contains(key), key);
@@ -98,7 +92,7 @@ private slots:
         const Run r = runCli({"simulate", path("bar.vtu"), "--steps", "50", "--out",
                               path("rest.vtu"), "--report", path("rest.json")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
-        const QJsonObject rep = readJson(path("rest.json"));
+        const QJsonObject rep = readJsonFile(path("rest.json"));
         QCOMPARE(effectNames(rep), QStringList{"deformation"});
         QCOMPARE(rep["max_speed"].toDouble(), 0.0);
         QCOMPARE(rep["kinetic_energy"].toObject()["max"].toDouble(), 0.0);
@@ -109,7 +103,7 @@ private slots:
         const Run probe = runCli({"simulate", path("bar.vtu"), "--steps", "1", "--out",
                                   path("probe.vtu"), "--report", path("probe.json")});
         QCOMPARE(probe.code, 0);
-        const double stable = readJson(path("probe.json"))["stable_dt"].toDouble();
+        const double stable = readJsonFile(path("probe.json"))["stable_dt"].toDouble();
         const Run r =
             runCli({"simulate", path("bar.vtu"), "--steps", "2000", "--dt",
                     QString::number(3 * stable, 'g', 17), "--effects", "deformation,gravity",
@@ -118,7 +112,7 @@ private slots:
         QVERIFY2(r.err.contains("too large for the explicit"), qPrintable(r.err));
         QCOMPARE(r.err.trimmed().count('\n'), 0);
         QVERIFY(!QFile::exists(path("boom.vtu")));
-        const QJsonObject rep = readJson(path("boom.json"));
+        const QJsonObject rep = readJsonFile(path("boom.json"));
         QCOMPARE(rep["finite"].toBool(true), false);
         QVERIFY(rep["steps"].toInt() < 2000);
         QCOMPARE(rep["requested_steps"].toInt(), 2000);
@@ -129,7 +123,7 @@ private slots:
         const Run probe = runCli({"simulate", path("bar.vtu"), "--steps", "1", "--out",
                                   path("probe.vtu"), "--report", path("probe.json")});
         QCOMPARE(probe.code, 0);
-        const double stable = readJson(path("probe.json"))["stable_dt"].toDouble();
+        const double stable = readJsonFile(path("probe.json"))["stable_dt"].toDouble();
         const Run r = runCli({"simulate",
                               path("bar.vtu"),
                               "--steps",
@@ -154,7 +148,7 @@ private slots:
                               "--report",
                               path("implicit.json")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
-        const QJsonObject rep = readJson(path("implicit.json"));
+        const QJsonObject rep = readJsonFile(path("implicit.json"));
         QCOMPARE(rep["integrator"].toString(), QString("backward-euler"));
         QCOMPARE(rep["finite"].toBool(), true);
         QCOMPARE(rep["inverted"].toInt(), 0);
@@ -184,7 +178,7 @@ private slots:
                               "--report",
                               path("pressed.json")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
-        const QJsonObject rep = readJson(path("pressed.json"));
+        const QJsonObject rep = readJsonFile(path("pressed.json"));
         QCOMPARE(effectNames(rep), (QStringList{"deformation", "tool-contact", "fixed"}));
         QVERIFY(rep["max_speed"].toDouble() > 0); // the tool pushed the top face in
     }
