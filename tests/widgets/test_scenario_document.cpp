@@ -34,13 +34,14 @@ bool writeAll(const QString& path, const QByteArray& bytes) {
     return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size();
 }
 
-Stroke sampleStroke(const char* name, double y) {
+Stroke sampleStroke(const char* name, double x) {
     Stroke s;
     s.name = name;
     for (int i = 0; i < 3; ++i) {
         ToolPose p;
         p.t = 0.2 * i;
-        p.position = Vec3(-8 + 8 * i, y, 10);
+        // Across the loop's plane (the tool curve lies in x-z), so the sweep is not flat.
+        p.position = Vec3(x, -8 + 8 * i, 10);
         s.poses.push_back(p);
     }
     return s;
