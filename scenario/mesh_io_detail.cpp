@@ -178,8 +178,21 @@ Status finishImportedMesh(const std::string& path, ImportedMesh imported, TetMes
             v = newIndex[v];
 
     TetMesh mesh = TetMesh::fromArrays(std::move(used), std::move(tets));
-    computeLumpedMasses(mesh, Material{}.density);
+    if (Status s = computeCheckedMasses(path, mesh); !s)
+        return s;
     out = std::move(mesh);
+    return Status::success();
+}
+
+Status computeCheckedMasses(const std::string& path, TetMesh& mesh) {
+    computeLumpedMasses(mesh, Material{}.density);
+    const std::span<const double> mass = mesh.masses();
+    for (std::size_t n = 0; n < mass.size(); ++n)
+        if (!std::isfinite(mass[n]) || !(mass[n] > 0))
+            return Status::error(path + ": node " + std::to_string(n) + " gets mass " +
+                                 std::to_string(mass[n]) +
+                                 " from the volumes of its tets; the coordinates are too large "
+                                 "or the tets too small for double precision");
     return Status::success();
 }
 

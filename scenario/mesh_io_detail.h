@@ -71,6 +71,12 @@ struct ImportedMesh {
 /// Errors are prefixed with `path`.
 Status finishImportedMesh(const std::string& path, ImportedMesh imported, TetMesh& out);
 
+/// Computes lumped masses from Material{}.density and checks them: every node's mass must
+/// be finite and positive. Finite coordinates can still give a tet volume that overflows
+/// (edges of about 1e103 and longer) or a mass that underflows to zero (edges of about
+/// 1e-107 and shorter), and such a mass breaks the simulation. Errors are prefixed with `path` and name the first bad node.
+Status computeCheckedMasses(const std::string& path, TetMesh& mesh);
+
 /// The limit on node and tet counts: TetMesh indexes with int.
 inline constexpr std::int64_t kMaxMeshItems = 2'147'483'647;
 

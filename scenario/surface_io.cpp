@@ -9,6 +9,7 @@
 
 #include "scenario/surface_io.h"
 
+#include "scenario/assimp_guard.h"
 #include "scenario/atomic_file.h"
 #include "scenario/mesh_io_detail.h"
 
@@ -169,33 +170,10 @@ Status repairPrimitiveTypes(const std::string& path, const aiScene& scene) {
     return Status::success();
 }
 
-/// assimp 5.2's PLY reader loops forever on a header without "end_header" (a truncated
-/// file): check PLY files for it first. The header is ASCII in every PLY variant.
-Status checkPlyHeader(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::string head(3, '\0');
-    if (!in.read(head.data(), 3) || head != "ply")
-        return Status::success(); // not a PLY file: assimp decides
-    // The header declares elements and properties line by line; this is far more than any
-    // real header needs.
-    constexpr std::size_t kMaxHeaderBytes = 1 << 20;
-    std::string header(kMaxHeaderBytes, '\0');
-    in.read(header.data(), static_cast<std::streamsize>(header.size()));
-    header.resize(static_cast<std::size_t>(in.gcount()));
-    // A line that is "end_header", possibly followed by blanks (assimp's own test).
-    for (std::size_t at = header.find("\nend_header"); at != std::string::npos;
-         at = header.find("\nend_header", at + 1)) {
-        const std::size_t after = at + 11;
-        if (after == header.size() || std::isspace(static_cast<unsigned char>(header[after])))
-            return Status::success();
-    }
-    return Status::error(path + ": damaged PLY file (its header has no end_header line)");
-}
-
 Status readSurfaceImpl(const std::string& path, TriangleSurface& out) {
     if (Status s = detail::checkRegularFile(path); !s)
         return s;
-    if (Status s = checkPlyHeader(path); !s)
+    if (Status s = detail::checkAssimpInput(path); !s)
         return s;
     Assimp::Importer importer;
     const auto failure = [&] {
@@ -322,7 +300,8 @@ Status writeObj(const std::string& path, const TriangleSurface& surface, const s
             if (surface.isCutFace(f))
                 for (int v : surface.triangles[f])
                     if (cutVt[v] == 0 && surface.cutUvs[v].allFinite()) {
-                        os << "vt " << surface.cutUvs[v].x() << ' ' << surface.cutUvs[v].y() << '\n';
+                        os << "vt " << surface.cutUvs[v].x() << ' ' << surface.cutUvs[v].y()
+                           << '\n';
                         cutVt[v] = nextVt++;
                     }
     const auto face = [&](const Tri& t, bool cut) {
@@ -435,7 +414,8 @@ Status checkWritable(const std::string& path, const TriangleSurface& surface) {
     if (!surface.cutFaces.empty() && surface.cutFaces.size() != surface.triangles.size())
         return Status::error(path + ": the surface's cut-face flags do not match its triangles");
     if (!surface.cutUvs.empty() && surface.cutUvs.size() != surface.positions.size())
-        return Status::error(path + ": the surface's cut-face texture coordinates do not match its vertices");
+        return Status::error(
+            path + ": the surface's cut-face texture coordinates do not match its vertices");
     const auto n = static_cast<int>(surface.positions.size());
     for (std::size_t f = 0; f < surface.triangles.size(); ++f)
         for (int v : surface.triangles[f])

@@ -11,8 +11,6 @@
 #include "scenario/vtk_messages.h"
 #include "scenario/vtk_xml_guard.h"
 
-#include "core/mesh/masses.h"
-#include "core/mesh/material.h"
 #include "core/mesh/predicates.h"
 
 #include <vtkCellArray.h>
@@ -197,8 +195,8 @@ Status readVtuImpl(const std::string& path, TetMesh& out) {
     std::copy(velocity.begin(), velocity.end(), mesh.velocities().begin());
     if (massArray)
         std::copy(mass.begin(), mass.end(), mesh.masses().begin());
-    else
-        computeLumpedMasses(mesh, Material{}.density);
+    else if (Status s = computeCheckedMasses(path, mesh); !s)
+        return s;
     out = std::move(mesh);
     return Status::success();
 }
