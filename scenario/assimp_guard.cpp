@@ -84,6 +84,15 @@ struct PlyElement {
     std::vector<PlyProperty> properties;
 };
 
+/// At most 40 characters of `token` for a message, bytes outside printable ASCII as '?'.
+std::string quoted(std::string_view token) {
+    std::string text(token.substr(0, 40));
+    for (char& c : text)
+        if (c < 0x20 || c > 0x7e)
+            c = '?';
+    return text;
+}
+
 /// The leading decimal digits of `token` (saturating at 2^62); false if it has none.
 bool leadingCount(std::string_view token, std::uint64_t& value) {
     value = 0;
@@ -125,7 +134,7 @@ std::string walkPlyData(std::string_view data, const std::vector<PlyElement>& el
                     std::uint64_t n = 0;
                     if (!leadingCount(token, n))
                         return where + " " + std::to_string(i) + " has the list length '" +
-                               std::string(token.substr(0, 20)) + "'";
+                               quoted(token) + "'";
                     // Each value takes a character and a separator.
                     if (n > (data.size() - pos) / 2)
                         return where + " " + std::to_string(i) + " declares a list of " +
@@ -209,15 +218,20 @@ Status checkPly(const std::string& path) {
         splitTokens(line, tok);
         if (tok.size() >= 2 && tok[0] == "format") {
             format = tok[1];
-        } else if (tok.size() >= 3 && tok[0] == "element") {
+        } else if (!tok.empty() && tok[0] == "element") {
+            // assimp's own parse of this line is loose: a count glued to the name is taken
+            // as the count too. So no number on the line may exceed the file size.
+            for (std::size_t k = 1; k < tok.size(); ++k) {
+                std::uint64_t n = 0;
+                if (leadingCount(tok[k], n) && n > file.size())
+                    return damaged("an element declares " + quoted(tok[k]) +
+                                   " items, more than a file of " + std::to_string(file.size()) +
+                                   " bytes can hold");
+            }
             PlyElement e;
-            e.name = std::string(tok[1].substr(0, 40));
-            if (!leadingCount(tok[2], e.count))
-                return Status::success(); // assimp reports the bad count
-            if (e.count > file.size())
-                return damaged("element " + e.name + " declares " +
-                               std::string(tok[2].substr(0, 40)) + " items, more than a file of " +
-                               std::to_string(file.size()) + " bytes can hold");
+            if (tok.size() < 3 || !leadingCount(tok[2], e.count))
+                return damaged("an element line is not \"element NAME COUNT\"");
+            e.name = quoted(tok[1]);
             elements.push_back(std::move(e));
         } else if (tok.size() >= 3 && tok[0] == "property" && !elements.empty()) {
             PlyProperty p;
@@ -228,22 +242,20 @@ Status checkPly(const std::string& path) {
                 p.size = plyTypeSize(tok[3]);
                 if (p.countSize == 0 || p.countSize == 8 || p.size == 0)
                     return damaged("element " + elements.back().name +
-                                   " has a list property of types '" +
-                                   std::string(tok[2].substr(0, 40)) + "' and '" +
-                                   std::string(tok[3].substr(0, 40)) + "'");
+                                   " has a list property of types '" + quoted(tok[2]) + "' and '" +
+                                   quoted(tok[3]) + "'");
             } else {
                 p.size = plyTypeSize(tok[1]);
                 if (p.size == 0)
                     return damaged("element " + elements.back().name +
-                                   " has a property of unknown type '" +
-                                   std::string(tok[1].substr(0, 40)) + "'");
+                                   " has a property of unknown type '" + quoted(tok[1]) + "'");
             }
             elements.back().properties.push_back(p);
         }
     }
     const bool ascii = format == "ascii";
     if (!ascii && format != "binary_little_endian" && format != "binary_big_endian")
-        return damaged("its format is '" + std::string(format.substr(0, 40)) +
+        return damaged("its format is '" + quoted(format) +
                        "', not ascii, binary_little_endian or binary_big_endian");
     // The data start on the line after end_header.
     const std::size_t newline = file.find('\n', endHeader);
