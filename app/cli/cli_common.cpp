@@ -58,6 +58,48 @@ std::vector<std::string> Args::options(const std::string& name) {
     return values;
 }
 
+std::optional<std::vector<std::string>> Args::optionValues(const std::string& name, int count) {
+    std::optional<std::vector<std::string>> values;
+    for (std::size_t i = 0; i < m_args.size();) {
+        if (m_args[i] != name) {
+            ++i;
+            continue;
+        }
+        if (values)
+            badInput(name + ": given more than once");
+        std::vector<std::string> taken;
+        for (int k = 1; k <= count; ++k) {
+            if (i + k >= m_args.size() || m_args[i + k].rfind("--", 0) == 0)
+                badInput(name + ": expected " + std::to_string(count) + " values");
+            taken.push_back(m_args[i + k]);
+        }
+        values = taken;
+        m_args.erase(m_args.begin() + i, m_args.begin() + i + 1 + count);
+    }
+    return values;
+}
+
+std::optional<std::vector<double>> Args::numbers(const std::string& name, int count,
+                                                 const std::string& what) {
+    const auto texts = optionValues(name, count);
+    if (!texts)
+        return std::nullopt;
+    std::vector<double> values;
+    for (const std::string& text : *texts) {
+        std::size_t used = 0;
+        double value = 0;
+        try {
+            value = std::stod(text, &used);
+        } catch (...) {
+            used = 0;
+        }
+        if (used == 0 || used != text.size() || !std::isfinite(value))
+            badInput(name + ": expected " + what + " (finite numbers), got '" + text + "'");
+        values.push_back(value);
+    }
+    return values;
+}
+
 std::string Args::requiredOption(const std::string& name) {
     auto v = option(name);
     if (!v || v->empty())

@@ -32,6 +32,12 @@ public:
 
     std::optional<std::string> option(const std::string& name);
     std::vector<std::string> options(const std::string& name);  ///< repeated option
+    /// An option followed by `count` values ("--fix-box x0 y0 z0 x1 y1 z1"); values may start
+    /// with '-' (negative numbers) but not with "--".
+    std::optional<std::vector<std::string>> optionValues(const std::string& name, int count);
+    /// optionValues parsed as finite numbers; the error names the option.
+    std::optional<std::vector<double>> numbers(const std::string& name, int count,
+                                               const std::string& what);
     std::string requiredOption(const std::string& name);
     bool flag(const std::string& name);
     /// A finite number in [min, max]; the error names the option and the bad value.
@@ -57,7 +63,11 @@ int runInfo(Args args);
 int runMesh(Args args);
 int runDemo(Args args);
 int runCut(Args args);
+int runSimulate(Args args);
 int runTable1(Args args);
+int runRun(Args args);
+int runExport(Args args);
 int runBench(Args args);
+int runBenchSim(Args& args);  ///< resect bench sim (command_bench_sim.cpp)
 
 } // namespace resect::cli

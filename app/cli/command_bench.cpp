@@ -149,6 +149,8 @@ int runSurface(Args& args) {
 }
 
 int runBench(Args args) {
+    if (args.flag("sim"))
+        return runBenchSim(args);
     if (args.flag("surface"))
         return runSurface(args);
     return runCutScaling(args);

@@ -100,21 +100,7 @@ int runCut(Args args) {
             surfaceSplitEdges += ec.surface.splitEdges;
             surfaceCapTriangles += ec.surface.capTriangles;
         }
-        const CutStats& c = result.stats;
-        total.cutEdges += c.cutEdges;
-        total.cutNodes += c.cutNodes;
-        total.decomposedTets += c.decomposedTets;
-        total.snappedNodes += c.snappedNodes;
-        total.refusedSnaps += c.refusedSnaps;
-        total.timeMs.snap += c.timeMs.snap;
-        total.timeMs.relax += c.timeMs.relax;
-        total.timeMs.update += c.timeMs.update;
-        total.separatedTets += c.separatedTets;
-        total.maxCutNodeDistance = std::max(total.maxCutNodeDistance, c.maxCutNodeDistance);
-        total.timeMs.intersect += c.timeMs.intersect;
-        total.timeMs.select += c.timeMs.select;
-        total.timeMs.decompose += c.timeMs.decompose;
-        total.timeMs.total += c.timeMs.total;
+        total += result.stats;
     }
     // Rest state: masses from the new reference volumes (Eq. 3).
     computeLumpedMasses(mesh, material.density);

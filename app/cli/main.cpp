@@ -24,10 +24,24 @@ commands:
       [--relax-steps N] [--w-spring W] [--w-particle W] [--surface HI_RES --surface-out OUT.obj]
                                     cut along one or more sweep surfaces, one after another;
                                     hybrid snaps and relaxes (10 steps) unless told not to
+  simulate MESH --steps N --out OUT.vtu [--report R.json] [--dt S]
+      [--integrator explicit|implicit|velocity-verlet] [--effects deformation,gravity,...]
+      [--fix-box x0 y0 z0 x1 y1 z1] [--damping C] [--tool x,y,z,... --tool-radius R]
+      [--threads N]                 run the tissue model (effects: deformation, gravity,
+                                    fixed, damping, tool-contact); dt defaults to the stable
+                                    explicit step; exit 1 if it diverged (report still written)
   table1 [--sample polyp|myoma ...] [--d 0.2] [--out TABLE.md]
                                     the paper's Table 1 on the built-in samples
+  run SCENARIO.json [--report R.json]
+                                    replay the scenario's strokes, cuts and simulation and
+                                    check its expectations (exit 3 if one fails)
+  export SCENARIO.json --out DIR [--force]
+                                    a self-contained trainer package (meshes, glTF surfaces,
+                                    the expert's result, manifest with SHA-256)
   bench cut-scaling [--sizes 10000,100000,1000000] [--repeats 7] [--out scaling.csv]
                                     the same local cut on meshes of growing size
+  bench sim [--sizes 10000,100000,1000000] [--threads 1,2] [--steps N]
+                                    cost of one explicit simulation step per tet
   bench surface [--details 1,5]     embedded surface: bind, apply, re-bind, cut (myoma
                                     surface at 40k x detail triangles)
 
@@ -55,8 +69,14 @@ int main(int argc, char** argv) {
             return runDemo(Args(args));
         if (command == "cut")
             return runCut(Args(args));
+        if (command == "simulate")
+            return runSimulate(Args(args));
         if (command == "table1")
             return runTable1(Args(args));
+        if (command == "run")
+            return runRun(Args(args));
+        if (command == "export")
+            return runExport(Args(args));
         if (command == "bench")
             return runBench(Args(args));
         throw CliError{kBadInput, "unknown command '" + command + "' (try resect --help)"};

@@ -24,6 +24,36 @@ double msSince(std::chrono::steady_clock::time_point t0) {
 
 } // namespace
 
+CutStats& CutStats::operator+=(const CutStats& c) {
+    crossedEdges += c.crossedEdges;
+    discardedEdges += c.discardedEdges;
+    cutEdges += c.cutEdges;
+    cutNodes += c.cutNodes;
+    snappedNodes += c.snappedNodes;
+    refusedSnaps += c.refusedSnaps;
+    relaxedMoves += c.relaxedMoves;
+    rejectedRelaxMoves += c.rejectedRelaxMoves;
+    decomposedTets += c.decomposedTets;
+    separatedTets += c.separatedTets;
+    duplicatedNodes += c.duplicatedNodes;
+    addedTets += c.addedTets;
+    addedNodes += c.addedNodes;
+    steinerPoints += c.steinerPoints;
+    faceNodes += c.faceNodes;
+    touchedTets += c.touchedTets;
+    maxCutNodeDistance = std::max(maxCutNodeDistance, c.maxCutNodeDistance);
+    for (std::size_t i = 0; i < schemeCount.size(); ++i)
+        schemeCount[i] += c.schemeCount[i];
+    timeMs.intersect += c.timeMs.intersect;
+    timeMs.select += c.timeMs.select;
+    timeMs.decompose += c.timeMs.decompose;
+    timeMs.snap += c.timeMs.snap;
+    timeMs.relax += c.timeMs.relax;
+    timeMs.update += c.timeMs.update;
+    timeMs.total += c.timeMs.total;
+    return *this;
+}
+
 HybridCutter::HybridCutter(TetMesh& mesh) : m_mesh(mesh) {
     // Headroom for the nodes and tets cuts add, so that a cut never pays for reallocating
     // the whole mesh (growth beyond it is amortised as usual).

@@ -64,6 +64,10 @@ struct CutStats {
     struct {
         double intersect = 0, select = 0, decompose = 0, snap = 0, relax = 0, update = 0, total = 0;
     } timeMs;
+
+    /// Adds another cut's statistics (counts and times summed, the distance maximised), for
+    /// totals over several cuts.
+    CutStats& operator+=(const CutStats& c);
 };
 
 struct CutResult {

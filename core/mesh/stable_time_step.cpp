@@ -17,9 +17,12 @@ struct RestStiffness {
     std::vector<double> edgeK;        ///< k_s per edge (Eq. 4)
     std::vector<std::array<Vec3, 4>> tetGrad;  ///< dV/dp_i per tet
     std::vector<double> tetK;         ///< k_v per tet (Eq. 4)
+    std::vector<Tri> tris;            ///< boundary triangles (area term only)
+    std::vector<std::array<Vec3, 3>> triGrad;  ///< dA/dp_i per triangle
+    std::vector<double> triK;         ///< k_a per triangle
 };
 
-RestStiffness buildRestStiffness(const TetMesh& mesh, const Material& material) {
+RestStiffness buildRestStiffness(const TetMesh& mesh, const Material& material, bool areaTerm) {
     RestStiffness s;
     const auto m = mesh.masses();
     s.edges = uniqueEdges(mesh);
@@ -49,6 +52,21 @@ RestStiffness buildRestStiffness(const TetMesh& mesh, const Material& material) 
         const double msum = m[q[0]] + m[q[1]] + m[q[2]] + m[q[3]];
         s.tetK[t] = v0 != 0 ? material.stiffness * msum / (v0 * v0) : 0.0;
     }
+    if (areaTerm) {
+        for (const BoundaryFace& f : boundaryFaces(mesh)) {
+            const Vec3 &p0 = mesh.ref(f.nodes[0]), &p1 = mesh.ref(f.nodes[1]),
+                       &p2 = mesh.ref(f.nodes[2]);
+            const Vec3 n = (p1 - p0).cross(p2 - p0);
+            const double a0 = 0.5 * n.norm();
+            if (!(a0 > 0))
+                continue;
+            const Vec3 h = n / (4 * a0);  // unit normal / 2
+            s.tris.push_back(f.nodes);
+            s.triGrad.push_back({h.cross(p2 - p1), h.cross(p0 - p2), h.cross(p1 - p0)});
+            s.triK.push_back(material.stiffness *
+                             (m[f.nodes[0]] + m[f.nodes[1]] + m[f.nodes[2]]) / (a0 * a0));
+        }
+    }
     return s;
 }
 
@@ -72,13 +90,20 @@ void apply(const TetMesh& mesh, const RestStiffness& s, std::span<const Vec3> x,
         for (int i = 0; i < 4; ++i)
             y[q[i]] += c * g[i];
     }
+    for (std::size_t f = 0; f < s.tris.size(); ++f) {
+        const Tri& q = s.tris[f];
+        const auto& a = s.triGrad[f];
+        const double c = s.triK[f] * (a[0].dot(x[q[0]]) + a[1].dot(x[q[1]]) + a[2].dot(x[q[2]]));
+        for (int i = 0; i < 3; ++i)
+            y[q[i]] += c * a[i];
+    }
 }
 
 } // namespace
 
 void applyRestStiffness(const TetMesh& mesh, const Material& material, std::span<const Vec3> x,
-                        std::span<Vec3> y) {
-    apply(mesh, buildRestStiffness(mesh, material), x, y);
+                        std::span<Vec3> y, bool areaTerm) {
+    apply(mesh, buildRestStiffness(mesh, material, areaTerm), x, y);
 }
 
 StableTimeStep stableTimeStep(const TetMesh& mesh, const Material& material,
@@ -87,7 +112,7 @@ StableTimeStep stableTimeStep(const TetMesh& mesh, const Material& material,
     const int n = mesh.nodeCount();
     if (mesh.empty() || n == 0)
         return result;
-    const RestStiffness s = buildRestStiffness(mesh, material);
+    const RestStiffness s = buildRestStiffness(mesh, material, options.areaTerm);
     const auto m = mesh.masses();
 
     // Block Gershgorin bound on M^-1 K: |lambda| <= max_i (||K_ii|| + sum_j ||K_ij||) / m_i.
@@ -101,6 +126,12 @@ StableTimeStep stableTimeStep(const TetMesh& mesh, const Material& material,
         const double total = g[0].norm() + g[1].norm() + g[2].norm() + g[3].norm();
         for (int i = 0; i < 4; ++i)
             rowSum[mesh.tet(t)[i]] += s.tetK[t] * g[i].norm() * total;
+    }
+    for (std::size_t f = 0; f < s.tris.size(); ++f) {
+        const auto& a = s.triGrad[f];
+        const double total = a[0].norm() + a[1].norm() + a[2].norm();
+        for (int i = 0; i < 3; ++i)
+            rowSum[s.tris[f][i]] += s.triK[f] * a[i].norm() * total;
     }
     std::vector<double> invSqrtMass(n, 0.0);
     for (int i = 0; i < n; ++i) {

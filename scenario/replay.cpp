@@ -1,0 +1,197 @@
+#include "scenario/replay.h"
+
+#include "core/mesh/quality.h"
+#include "core/mesh/topology.h"
+#include "core/sim/tool_contact_effect.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace resect {
+namespace {
+
+constexpr double kToolContactMargin = 0.8;
+
+/// The tool's points at time t of a stroke: linear between the two nearest samples.
+std::vector<Vec3> toolAt(const ReplayStroke& s, double t) {
+    if (t <= s.times.front())
+        return s.tool.front();
+    if (t >= s.times.back())
+        return s.tool.back();
+    const auto it = std::upper_bound(s.times.begin(), s.times.end(), t);
+    const std::size_t i = static_cast<std::size_t>(it - s.times.begin());
+    const double a = (t - s.times[i - 1]) / std::max(s.times[i] - s.times[i - 1], 1e-300);
+    std::vector<Vec3> points(s.tool[i].size());
+    for (std::size_t k = 0; k < points.size(); ++k)
+        points[k] = (1 - a) * s.tool[i - 1][k] + a * s.tool[i][k];
+    return points;
+}
+
+/// The tool moved out of the way: above the tissue by twice its size.
+std::vector<Vec3> withdrawn(const std::vector<Vec3>& pose, const TetMesh& mesh) {
+    const auto [lo, hi] = boundingBox(mesh.positions());
+    const double lift = 2 * (hi - lo).norm() + (hi.z() - lo.z());
+    std::vector<Vec3> points = pose;
+    for (Vec3& p : points)
+        p.z() += lift;
+    return points;
+}
+
+} // namespace
+
+Status replay(ReplayPlan plan, ReplayOutcome& out, const ReplayProgress& progress) {
+    out = {};
+    TetMesh& mesh = plan.mesh;
+    out.tetsBefore = mesh.tetCount();
+    std::sort(plan.effectSettings.fixed.nodes.begin(), plan.effectSettings.fixed.nodes.end());
+    EmbeddedSurface embedded;
+    if (!plan.surface.triangles.empty())
+        if (Status s = embedded.bind(mesh, std::move(plan.surface)); !s.ok())
+            return Status::error("binding the surface: " + s.message());
+
+    // The tool starts withdrawn above the first pose of the first stroke that has poses.
+    const bool wantsTool = std::find(plan.effects.begin(), plan.effects.end(), "tool-contact") != plan.effects.end();
+    std::vector<Vec3> toolHome;
+    for (const ReplayStroke& s : plan.strokes)
+        if (!s.tool.empty()) {
+            toolHome = withdrawn(s.tool.front(), mesh);
+            break;
+        }
+    if (wantsTool && !toolHome.empty())
+        plan.effectSettings.tool.points = toolHome;
+
+    Simulator sim(mesh, plan.material, plan.simulation);
+    for (const std::string& name : plan.effects)
+        if (Status s = sim.addEffect(name, plan.effectSettings); !s.ok())
+            return Status::error("effect '" + name + "': " + s.message());
+    auto* tool = dynamic_cast<ToolContactEffect*>(sim.findEffect("tool-contact"));
+
+    // Total simulated time, for progress.
+    double total = plan.duration;
+    for (const ReplayStroke& s : plan.strokes)
+        if (tool && s.times.size() >= 2)
+            total += s.times.back() - s.times.front();
+    double done = 0;
+    const auto report = [&](double t) { return !progress || progress(total > 0 ? std::min(1.0, t / total) : 1.0); };
+
+    out.kineticInitial = out.kineticMax = sim.kineticEnergy();
+    bool diverged = false;
+    // Runs the simulation for `span` seconds; `pose` gives the tool's points at a time.
+    const auto simulate = [&](double span, const std::function<std::vector<Vec3>(double)>& pose) -> Status {
+        if (span <= 0 || diverged)
+            return Status::success();
+        // The stable estimate holds for small deformations; a tool pushing surface nodes by
+        // projection deforms small elements strongly within a step, so an explicit
+        // integrator at "stable" keeps the margin the simulator advises (0.8).
+        double dt = sim.timeStep();
+        if (plan.simulation.dt <= 0 && tool && isExplicit(plan.simulation.integrator))
+            dt *= kToolContactMargin;
+        if (!(dt > 0) || !std::isfinite(dt))
+            return Status::error("the simulation has no usable time step");
+        const long long steps = static_cast<long long>(std::ceil(span / dt - 1e-9));
+        if (out.steps + steps > plan.maxSteps)
+            return Status::error("the scenario needs more than " + std::to_string(plan.maxSteps) +
+                                 " simulation steps at dt = " + std::to_string(dt) +
+                                 " s: shorten the duration, or use a larger time step with the implicit integrator");
+        const double h = span / static_cast<double>(steps);
+        for (long long i = 0; i < steps; ++i) {
+            if (tool && pose)
+                if (Status s = tool->setPose(pose(i * h)); !s.ok())
+                    return s;
+            if (Status s = sim.step(h); !s.ok()) {
+                out.finite = false;
+                out.failure = s.message();
+                diverged = true;
+                return Status::success();
+            }
+            ++out.steps;
+            out.dt = h;
+            out.kineticMax = std::max(out.kineticMax, sim.lastStep().kineticEnergy);
+            out.maxSpeed = std::max(out.maxSpeed, sim.lastStep().maxSpeed);
+            if (i % 64 == 0 && !report(done + i * h))
+                return Status::error("cancelled");
+        }
+        done += span;
+        return Status::success();
+    };
+
+    HybridCutter cutter(mesh);
+    bool moved = false;  // positions changed since the cutter's spatial index was built
+    for (const ReplayStroke& stroke : plan.strokes) {
+        if (moved)
+            cutter.refreshSpatialIndex();
+        embedded.update(mesh);
+        CutResult result;
+        if (Status s = cutter.cut(stroke.sweep, plan.cut, result); !s.ok())
+            return Status::error(stroke.name + ": the cut failed: " + s.message());
+        out.cutTotals += result.stats;
+        sim.applyCut(result.changes);
+        EmbeddedCut ec;
+        if (Status s = embedded.cut(mesh, result.changes, stroke.sweep, &ec); !s.ok())
+            return Status::error(stroke.name + ": cutting the surface failed: " + s.message());
+        out.surfaceCapTriangles += ec.surface.capTriangles;
+        if (tool && stroke.times.size() >= 2) {
+            const double t0 = stroke.times.front();
+            if (Status s = simulate(stroke.times.back() - t0, [&](double t) { return toolAt(stroke, t0 + t); }); !s.ok())
+                return s;
+            moved = true;
+            if (Status s = tool->setPose(withdrawn(stroke.tool.back(), mesh)); !s.ok())
+                return s;
+        }
+        if (!report(done))
+            return Status::error("cancelled");
+    }
+    if (Status s = simulate(plan.duration, {}); !s.ok())
+        return s;
+
+    // Outcome.
+    embedded.update(mesh);
+    out.stableDt = sim.stableTimeStep();
+    if (out.dt == 0)
+        out.dt = sim.timeStep();
+    out.kineticFinal = sim.kineticEnergy();
+    out.effectTimes = sim.totalTimes();
+    out.finite = out.finite && std::isfinite(out.kineticFinal);
+    for (int n = 0; n < mesh.nodeCount() && out.finite; ++n)
+        out.finite = mesh.pos(n).allFinite();
+    for (int t = 0; t < mesh.tetCount(); ++t)
+        out.inverted += mesh.currentVolume(t) > 0 ? 0 : 1;
+    const Components comp = connectedComponents(mesh);
+    out.pieces = comp.count;
+    std::vector<double> volume(comp.count, 0.0);
+    for (int t = 0; t < mesh.tetCount(); ++t)
+        volume[comp.tetComponent[t]] += mesh.referenceVolume(t);
+    std::vector<bool> anchored(comp.count, false);
+    bool anyAnchored = false;
+    if (const auto* fixed = sim.findEffect("fixed")) {
+        (void)fixed;
+        const auto& box = plan.effectSettings.fixed.box;
+        for (int n = 0; n < mesh.nodeCount(); ++n) {
+            const bool inBox = box && (mesh.ref(n).array() >= (*box)[0].array()).all() &&
+                               (mesh.ref(n).array() <= (*box)[1].array()).all();
+            const bool listed = !box && std::binary_search(plan.effectSettings.fixed.nodes.begin(),
+                                                           plan.effectSettings.fixed.nodes.end(), n);
+            if ((inBox || listed) && comp.nodeComponent[n] >= 0) {
+                anchored[comp.nodeComponent[n]] = true;
+                anyAnchored = true;
+            }
+        }
+    }
+    if (!anyAnchored && comp.count > 0)
+        anchored[std::max_element(volume.begin(), volume.end()) - volume.begin()] = true;
+    double all = 0, resected = 0;
+    for (int c = 0; c < comp.count; ++c) {
+        all += volume[c];
+        if (!anchored[c])
+            resected += volume[c];
+    }
+    out.resectedVolumeFraction = all > 0 ? resected / all : 0;
+    out.minRadiusRatio = summarizeQuality(mesh).minRadiusRatio;
+    out.surface = embedded.surface();
+    out.mesh = std::move(mesh);
+    report(total);
+    return Status::success();
+}
+
+} // namespace resect

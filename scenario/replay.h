@@ -1,0 +1,86 @@
+#pragma once
+// Replay of a scenario's strokes, cuts and simulation (issue 7: `resect run`), independent of
+// the document format: the document is turned into a ReplayPlan (scenario_replay.h), which
+// this runs.
+//
+// Timeline. Strokes run in order. A stroke cuts the tissue along its sweep (HybridCutter, then
+// the embedded surface follows: EmbeddedSurface::cut) and, when the scene has the
+// `tool-contact` effect and the stroke has time-stamped poses, the simulation then runs over
+// the stroke's time span with the tool at the pose interpolated linearly between samples.
+// Between strokes and after the last one the tool is withdrawn (moved above the tissue by
+// twice the tissue's size). After all strokes the simulation runs for `duration` seconds.
+//
+// Time step: the plan's, or the stable explicit step; with tool contact and an explicit
+// integrator, 0.8 times it (the stable estimate holds for small deformations, and the tool's
+// projection deforms the small elements next to a cut strongly within one step).
+//
+// Outcome. `pieces` are the tet mesh's connected components; the resected volume fraction is
+// the reference volume of the pieces holding no anchored node over the total (with no
+// anchored nodes: all pieces but the largest); `inverted` counts tets with non-positive
+// current volume at the end. A simulation that diverges stops the replay with
+// `finite = false` and the reason in `failure` (the replay itself succeeds: expectations
+// decide).
+//
+// Determinism: the same plan gives the same outcome (timings aside) for the same thread
+// count (the simulator is deterministic per thread count, core/sim/parallel.h).
+
+#include "core/cut/hybrid_cutter.h"
+#include "core/embed/embedded_surface.h"
+#include "core/mesh/material.h"
+#include "core/sim/simulator.h"
+#include "core/status.h"
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace resect {
+
+struct ReplayStroke {
+    std::string name;                     ///< for messages ("strokes[2]", "sweeps[0]")
+    SweepSurface sweep;                   ///< the surface the stroke sweeps
+    std::vector<double> times;            ///< s, one per pose (empty: an explicit sweep)
+    std::vector<std::vector<Vec3>> tool;  ///< per pose: the tool's points in world space (mm)
+};
+
+struct ReplayPlan {
+    TetMesh mesh;                  ///< the tissue, masses set
+    TriangleSurface surface;       ///< the embedded high-resolution surface (may be empty)
+    std::vector<ReplayStroke> strokes;
+    CutOptions cut;
+    Material material;
+    std::vector<std::string> effects;  ///< names for the EffectRegistry, in order
+    EffectSettings effectSettings;     ///< their parameters (fixed nodes, gravity, tool, ...)
+    SimulatorOptions simulation;       ///< integrator and dt (0: the stable step)
+    double duration = 0;               ///< s simulated after the strokes
+    long long maxSteps = 2'000'000;    ///< refuse plans that need more steps than this
+};
+
+struct ReplayOutcome {
+    TetMesh mesh;              ///< the tissue at the end
+    TriangleSurface surface;   ///< the embedded surface at the end (deformed with the tets)
+    int tetsBefore = 0;
+    int pieces = 0;
+    double resectedVolumeFraction = 0;
+    double minRadiusRatio = 0;
+    bool finite = true;
+    int inverted = 0;
+    long long steps = 0;
+    double dt = 0, stableDt = 0;
+    double maxSpeed = 0;
+    double kineticInitial = 0, kineticMax = 0, kineticFinal = 0;
+    std::string failure;       ///< why the simulation stopped early (empty if it did not)
+    CutStats cutTotals;        ///< summed over the strokes (times included)
+    int surfaceCapTriangles = 0;
+    std::vector<EffectTime> effectTimes;  ///< ms per effect over the whole run
+};
+
+/// Progress in [0, 1]; return false to cancel (the replay then fails with "cancelled").
+using ReplayProgress = std::function<bool(double)>;
+
+/// Runs the plan (consumed). Errors: a cut that fails (naming the stroke), bad effect
+/// parameters, a plan needing more than maxSteps steps, cancellation.
+Status replay(ReplayPlan plan, ReplayOutcome& out, const ReplayProgress& progress = {});
+
+} // namespace resect

@@ -1,0 +1,232 @@
+#include "scenario/scenario_run.h"
+
+#include "core/mesh/masses.h"
+#include "scenario/anatomy.h"
+#include "scenario/mesh_io.h"
+#include "scenario/scenario_sweeps.h"
+
+#include <QJsonArray>
+
+#include <algorithm>
+#include <functional>
+
+namespace resect {
+namespace {
+
+Integrator integratorOf(const std::string& name) {
+    if (name == "velocity-verlet")
+        return Integrator::VelocityVerlet;
+    if (name == "backward-euler")
+        return Integrator::BackwardEuler;
+    return Integrator::SymplecticEuler;
+}
+
+} // namespace
+
+bool ScenarioRun::allPassed() const {
+    return std::all_of(expectations.begin(), expectations.end(), [](const ExpectationResult& e) { return e.passed; });
+}
+
+Status planTissue(const Scenario& scenario, const TissueSpec& tissue, ReplayPlan& plan) {
+    plan = {};
+    const std::string where = "tissue '" + tissue.name + "'";
+    plan.material = tissue.material.toMaterial();
+    TriangleSurface surface;
+    if (!tissue.surface.empty()) {
+        const std::string source =
+            isSampleSource(tissue.surface) ? tissue.surface : resolveScenarioPath(scenario.baseDir, tissue.surface);
+        if (Status s = loadAnatomy(source, surface); !s.ok())
+            return Status::error(where + ": " + s.message());
+    }
+    if (!tissue.mesh.empty()) {
+        if (Status s = readTetMesh(resolveScenarioPath(scenario.baseDir, tissue.mesh), plan.mesh); !s.ok())
+            return Status::error(where + ": " + s.message());
+        computeLumpedMasses(plan.mesh, plan.material.density);
+    } else {
+        if (surface.triangles.empty())
+            return Status::error(where + ": needs a surface to mesh or a tet mesh");
+        AnatomyMeshing meshing;
+        meshing.meshing.edgeLength = tissue.meshing.edgeLength;
+        meshing.meshing.seed = tissue.meshing.seed;
+        meshing.material = plan.material;
+        if (Status s = meshAnatomy(surface, meshing, plan.mesh); !s.ok())
+            return Status::error(where + ": " + s.message());
+    }
+    plan.surface = std::move(surface);
+
+    // Cuts: strokes (with the tool's points at every pose, for tool contact), then sweeps.
+    std::vector<ScenarioCut> cuts;
+    if (Status s = scenarioCuts(scenario, cuts); !s.ok())
+        return s;
+    for (std::size_t i = 0; i < cuts.size(); ++i) {
+        ReplayStroke stroke;
+        stroke.name = cuts[i].label;
+        stroke.sweep = std::move(cuts[i].sweep);
+        if (i < scenario.strokes.size())
+            for (const ToolPose& pose : scenario.strokes[i].poses) {
+                stroke.times.push_back(pose.t);
+                stroke.tool.push_back(toolCurveAt(scenario.tool, pose));
+            }
+        plan.strokes.push_back(std::move(stroke));
+    }
+
+    plan.cut = toCutOptions(scenario.cut, tissue.material);
+    for (const EffectSpec& e : scenario.effects) {
+        plan.effects.push_back(e.name);
+        if (e.name == "deformation") {
+            plan.effectSettings.deformation.distance = e.flag("distance", true);
+            plan.effectSettings.deformation.volume = e.flag("volume", true);
+            plan.effectSettings.deformation.area = e.flag("area", true);
+        } else if (e.name == "gravity") {
+            plan.effectSettings.gravity = e.vector("acceleration", Vec3(0, 0, -9810));
+        } else if (e.name == "tool-contact") {
+            plan.effectSettings.tool.radius = e.number("radius", 0);
+            if (!scenario.tool.curve.empty() && !scenario.strokes.empty() && !scenario.strokes[0].poses.empty())
+                plan.effectSettings.tool.points = toolCurveAt(scenario.tool, scenario.strokes[0].poses[0]);
+            else if (!scenario.tool.curve.empty())
+                plan.effectSettings.tool.points = toolCurveAt(scenario.tool, ToolPose{});
+        } else if (e.name == "damping") {
+            if (e.parameters.contains("coefficient"))
+                plan.effectSettings.damping = e.number("coefficient", 0);
+        } else if (e.name == "fixed") {
+            for (int n = 0; n < plan.mesh.nodeCount(); ++n)
+                for (const FixedRegion& r : tissue.fixedRegions)
+                    if (r.contains(plan.mesh.ref(n))) {
+                        plan.effectSettings.fixed.nodes.push_back(n);
+                        break;
+                    }
+            if (plan.effectSettings.fixed.nodes.empty())
+                return Status::error(where + ": the fixed effect holds no node (no node lies in its fixed_regions)");
+        }
+    }
+    plan.simulation.integrator = integratorOf(scenario.simulation.integrator);
+    plan.simulation.dt = scenario.simulation.timeStep;  // 0: stable
+    // One thread: a scenario replays to the same result on any machine.
+    plan.simulation.threads = 1;
+    plan.effectSettings.threads = 1;
+    plan.duration = scenario.simulation.duration;
+    return Status::success();
+}
+
+std::vector<ExpectationResult> evaluateExpectations(const Scenario& scenario, const std::vector<TissueRun>& tissues) {
+    std::vector<ExpectationResult> results;
+    for (const Expectation& e : scenario.expectations)
+        for (const TissueRun& t : tissues) {
+            if (!e.tissue.empty() && e.tissue != t.name)
+                continue;
+            ExpectationResult r;
+            r.kind = expectationKindName(e.kind);
+            r.tissue = t.name;
+            r.expected = e.value;
+            const ReplayOutcome& o = t.outcome;
+            switch (e.kind) {
+            case ExpectationKind::PiecesAtLeast:
+                r.actual = o.pieces;
+                r.passed = o.pieces >= e.value;
+                break;
+            case ExpectationKind::ResectedVolumeFractionAtLeast:
+                r.actual = o.resectedVolumeFraction;
+                r.passed = o.resectedVolumeFraction >= e.value;
+                break;
+            case ExpectationKind::MinRadiusRatioAtLeast:
+                r.actual = o.minRadiusRatio;
+                r.passed = o.minRadiusRatio >= e.value;
+                break;
+            case ExpectationKind::StaysFinite:
+                r.actual = o.finite ? 1 : 0;
+                r.passed = (e.value != 0) == o.finite;
+                break;
+            case ExpectationKind::MaxInvertedTets:
+                r.actual = o.inverted;
+                r.passed = o.inverted <= e.value;
+                break;
+            }
+            results.push_back(r);
+        }
+    return results;
+}
+
+Status runScenario(const Scenario& scenario, ScenarioRun& out, const ReplayProgress& progress) {
+    out = {};
+    const int count = static_cast<int>(scenario.tissues.size());
+    for (int i = 0; i < count; ++i) {
+        const TissueSpec& tissue = scenario.tissues[i];
+        ReplayPlan plan;
+        if (Status s = planTissue(scenario, tissue, plan); !s.ok())
+            return s;
+        TissueRun run;
+        run.name = tissue.name;
+        const ReplayProgress part = [&](double p) { return !progress || progress((i + p) / count); };
+        if (Status s = replay(std::move(plan), run.outcome, part); !s.ok())
+            return Status::error("tissue '" + tissue.name + "': " + s.message());
+        out.tissues.push_back(std::move(run));
+    }
+    out.expectations = evaluateExpectations(scenario, out.tissues);
+    return Status::success();
+}
+
+QJsonObject scenarioRunJson(const ScenarioRun& run) {
+    QJsonArray tissues;
+    for (const TissueRun& t : run.tissues) {
+        const ReplayOutcome& o = t.outcome;
+        QJsonArray effects;
+        for (const EffectTime& e : o.effectTimes)
+            effects.append(QJsonObject{{"name", QString::fromStdString(e.name)}, {"time_ms", e.ms}});
+        tissues.append(QJsonObject{
+            {"name", QString::fromStdString(t.name)},
+            {"tets_before", o.tetsBefore},
+            {"tets", o.mesh.tetCount()},
+            {"nodes", o.mesh.nodeCount()},
+            {"pieces", o.pieces},
+            {"resected_volume_fraction", o.resectedVolumeFraction},
+            {"min_radius_ratio", o.minRadiusRatio},
+            {"finite", o.finite},
+            {"inverted", o.inverted},
+            {"steps", static_cast<double>(o.steps)},
+            {"dt", o.dt},
+            {"stable_dt", o.stableDt},
+            {"max_speed", o.maxSpeed},
+            {"kinetic_energy", QJsonObject{{"initial", o.kineticInitial}, {"max", o.kineticMax}, {"final", o.kineticFinal}}},
+            {"failure", QString::fromStdString(o.failure)},
+            {"cut", QJsonObject{{"cut_edges", o.cutTotals.cutEdges},
+                                {"cut_nodes", o.cutTotals.cutNodes},
+                                {"decomposed_tets", o.cutTotals.decomposedTets},
+                                {"snapped_nodes", o.cutTotals.snappedNodes},
+                                {"separated_tets", o.cutTotals.separatedTets},
+                                {"surface_cap_triangles", o.surfaceCapTriangles},
+                                {"time_ms", o.cutTotals.timeMs.total}}},
+            {"surface", QJsonObject{{"vertices", o.surface.vertexCount()}, {"triangles", o.surface.triangleCount()}}},
+            {"effects", effects}});
+    }
+    QJsonArray expectations;
+    for (const ExpectationResult& e : run.expectations)
+        expectations.append(QJsonObject{{"kind", QString::fromStdString(e.kind)},
+                                        {"tissue", QString::fromStdString(e.tissue)},
+                                        {"expected", e.expected},
+                                        {"actual", e.actual},
+                                        {"passed", e.passed}});
+    return QJsonObject{{"tissues", tissues}, {"expectations", expectations}, {"passed", run.allPassed()}};
+}
+
+QJsonObject stripTimings(const QJsonObject& report) {
+    const std::function<QJsonValue(const QJsonValue&)> strip = [&](const QJsonValue& v) -> QJsonValue {
+        if (v.isObject()) {
+            QJsonObject o;
+            const QJsonObject in = v.toObject();
+            for (auto it = in.begin(); it != in.end(); ++it)
+                if (it.key() != "time_ms")
+                    o[it.key()] = strip(it.value());
+            return o;
+        }
+        if (v.isArray()) {
+            QJsonArray a;
+            for (const QJsonValue& x : v.toArray())
+                a.append(strip(x));
+            return a;
+        }
+        return v;
+    };
+    return strip(report).toObject();
+}
+
+} // namespace resect

@@ -1,0 +1,53 @@
+#pragma once
+// Running a scenario document (issue 7, `resect run`): every tissue is loaded or meshed, its
+// surface bound, every stroke and sweep replayed on it (scenario/replay.h) with the declared
+// effects and simulation settings, and the expectations evaluated per tissue.
+
+#include "scenario/replay.h"
+#include "scenario/scenario_document.h"
+
+#include <QJsonObject>
+
+#include <string>
+#include <vector>
+
+namespace resect {
+
+struct ExpectationResult {
+    std::string kind;     ///< "pieces_at_least", ...
+    std::string tissue;
+    double expected = 0;  ///< the bound
+    double actual = 0;
+    bool passed = false;
+};
+
+struct TissueRun {
+    std::string name;
+    ReplayOutcome outcome;
+};
+
+struct ScenarioRun {
+    std::vector<TissueRun> tissues;
+    std::vector<ExpectationResult> expectations;
+    bool allPassed() const;
+};
+
+/// Builds the replay plan of one tissue: loads or meshes it (masses from its material),
+/// loads its surface, turns strokes and sweeps into cuts and the effects into simulator
+/// settings. Errors name the tissue, file or field.
+Status planTissue(const Scenario& scenario, const TissueSpec& tissue, ReplayPlan& plan);
+
+/// Replays every tissue and evaluates the expectations. Progress covers all tissues.
+Status runScenario(const Scenario& scenario, ScenarioRun& out, const ReplayProgress& progress = {});
+
+/// The run as JSON (the `resect run` report): per tissue its outcome, per expectation its
+/// result, "passed". Every timing is under a key "time_ms" (or "effects"[].time_ms), so two
+/// runs compare equal once those are dropped (stripTimings).
+QJsonObject scenarioRunJson(const ScenarioRun& run);
+/// A copy of `report` without its timings (keys "time_ms", recursively).
+QJsonObject stripTimings(const QJsonObject& report);
+
+/// Evaluates the expectations against finished tissue runs (exposed for tests).
+std::vector<ExpectationResult> evaluateExpectations(const Scenario& scenario, const std::vector<TissueRun>& tissues);
+
+} // namespace resect

@@ -1,0 +1,459 @@
+#include "widgets/scenario_document.h"
+
+#include "widgets/scenario_commands.h"
+
+#include "core/mesher/samples.h"
+#include "scenario/atomic_file.h"
+#include "scenario/scenario_load.h"
+#include "scenario/scenario_save.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QSettings>
+#include <QStandardPaths>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+namespace resect {
+
+namespace {
+
+/// The default tool of a new document: a half loop of radius 1 in the tool's x-z plane,
+/// opening upwards (as the bundled examples), 8 segments, scaled to 3.5 mm (7 mm wide).
+ToolSpec defaultTool() {
+    constexpr int kSegments = 8;
+    ToolSpec tool;
+    tool.name = "loop electrode";
+    tool.size = 3.5;
+    for (int i = 0; i <= kSegments; ++i) {
+        const double a = std::numbers::pi * i / kSegments;
+        tool.curve.emplace_back(std::cos(a), 0.0, -std::sin(a));
+    }
+    return tool;
+}
+
+QString fromStd(const std::string& s) {
+    return QString::fromStdString(s);
+}
+
+std::string toStd(const QString& s) {
+    return s.toStdString();
+}
+
+/// Every error of `diag`, one line each, "NAME: PATH: MESSAGE".
+QString errorLines(const ScenarioDiagnostics& diag, const QString& name) {
+    QStringList lines;
+    for (const ScenarioIssue& issue : diag.issues()) {
+        if (!issue.isError())
+            continue;
+        lines << (issue.path.empty() ? name + QStringLiteral(": ") + fromStd(issue.message)
+                                     : name + QStringLiteral(": ") + fromStd(issue.path) +
+                                           QStringLiteral(": ") + fromStd(issue.message));
+    }
+    if (diag.dropped() > 0)
+        lines << name + QStringLiteral(": ... and %1 more problems").arg(diag.dropped());
+    return lines.join(QLatin1Char('\n'));
+}
+
+void setError(QString* error, const QString& message) {
+    if (error)
+        *error = message;
+}
+
+} // namespace
+
+ScenarioDocument::ScenarioDocument(QObject* parent) : QObject(parent) {
+    connect(&m_undo, &QUndoStack::cleanChanged, this,
+            [this](bool clean) { emit modifiedChanged(!clean); });
+    connect(&m_autosaveTimer, &QTimer::timeout, this, [this] { autosaveNow(); });
+}
+
+// Leaves any autosave in place on purpose: see the header (a crash looks the same).
+ScenarioDocument::~ScenarioDocument() = default;
+
+QString ScenarioDocument::displayName() const {
+    return m_filePath.isEmpty() ? tr("untitled") : QFileInfo(m_filePath).fileName();
+}
+
+// ---- Files -----------------------------------------------------------------------------
+
+bool ScenarioDocument::newFromSample(const QString& name, QString* error) {
+    if (!sampleFromName(toStd(name))) {
+        setError(error, tr("unknown sample \"%1\" (known: %2)")
+                            .arg(name, fromStd([] {
+                                     std::string all;
+                                     for (const std::string& n : sampleNames())
+                                         all += (all.empty() ? "" : ", ") + n;
+                                     return all;
+                                 }())));
+        return false;
+    }
+    Scenario s;
+    s.metadata.title = toStd(tr("New %1 scenario").arg(name));
+    TissueSpec tissue;
+    tissue.name = toStd(name);
+    tissue.surface = "sample:" + toStd(name);
+    s.tissues.push_back(std::move(tissue));
+    s.tool = defaultTool();
+    EffectSpec deformation;
+    deformation.name = "deformation";
+    s.effects.push_back(std::move(deformation));
+    removeOwnAutosave();
+    reset(std::move(s), QString(), false);
+    return true;
+}
+
+bool ScenarioDocument::open(const QString& path, QString* error) {
+    Scenario loaded;
+    ScenarioDiagnostics diag;
+    const Status status = loadScenario(toStd(path), loaded, diag);
+    if (!status) {
+        const QString lines = errorLines(diag, path);
+        setError(error, lines.isEmpty() ? fromStd(status.message()) : lines);
+        return false;
+    }
+    removeOwnAutosave();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    reset(std::move(loaded), absolute, false);
+    addRecentFile(absolute);
+    return true;
+}
+
+bool ScenarioDocument::save(QString* error) {
+    if (m_filePath.isEmpty()) {
+        setError(error, tr("the document has no file name yet (use Save As)"));
+        return false;
+    }
+    return saveAs(m_filePath, error);
+}
+
+bool ScenarioDocument::saveAs(const QString& path, QString* error) {
+    if (path.isEmpty()) {
+        setError(error, tr("no file name given"));
+        return false;
+    }
+    const QFileInfo info(path);
+    const QString absolute = info.absoluteFilePath();
+    const Status status = saveScenario(toStd(absolute), m_scenario);
+    if (!status) {
+        setError(error, fromStd(status.message()));
+        return false;
+    }
+    // The file now holds the paths relative to its folder; so does the document.
+    rebaseScenarioPaths(m_scenario, toStd(info.absolutePath()));
+    m_undo.setClean();
+    setFilePath(absolute);
+    removeOwnAutosave();
+    addRecentFile(absolute);
+    return true;
+}
+
+void ScenarioDocument::close() {
+    removeOwnAutosave();
+    reset(Scenario{}, QString(), false);
+}
+
+void ScenarioDocument::reset(Scenario scenario, const QString& filePath, bool modified) {
+    m_scenario = std::move(scenario);
+    m_offEffectParameters = {};
+    m_undo.clear(); // clean again: emits modifiedChanged(false) if it was modified
+    if (modified)
+        m_undo.resetClean(); // no state is clean: emits modifiedChanged(true)
+    setFilePath(filePath);
+    emit documentReset();
+    notify(AllParts);
+}
+
+void ScenarioDocument::setFilePath(const QString& path) {
+    if (path == m_filePath)
+        return;
+    m_filePath = path;
+    emit fileChanged(m_filePath);
+}
+
+// ---- Recent files ----------------------------------------------------------------------
+
+QSettings& ScenarioDocument::settings() const {
+    if (m_settings)
+        return *m_settings;
+    if (!m_appSettings)
+        m_appSettings = std::make_unique<QSettings>();
+    return *m_appSettings;
+}
+
+QStringList ScenarioDocument::recentFiles() const {
+    return settings().value(QLatin1String(kRecentFilesKey)).toStringList();
+}
+
+void ScenarioDocument::addRecentFile(const QString& path) {
+    const QString absolute = QDir::cleanPath(QFileInfo(path).absoluteFilePath());
+    QStringList files = recentFiles();
+    files.removeAll(absolute);
+    files.prepend(absolute);
+    while (files.size() > kMaxRecentFiles)
+        files.removeLast();
+    settings().setValue(QLatin1String(kRecentFilesKey), files);
+    emit recentFilesChanged();
+}
+
+void ScenarioDocument::clearRecentFiles() {
+    settings().remove(QLatin1String(kRecentFilesKey));
+    emit recentFilesChanged();
+}
+
+// ---- Autosave --------------------------------------------------------------------------
+
+QString ScenarioDocument::autosaveDirectory() const {
+    return m_autosaveDir.isEmpty()
+               ? QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation)
+               : m_autosaveDir;
+}
+
+QString ScenarioDocument::autosavePath() const {
+    return QDir(autosaveDirectory()).filePath(QLatin1String(kAutosaveFileName));
+}
+
+void ScenarioDocument::setAutosaveInterval(int ms) {
+    if (ms <= 0) {
+        m_autosaveTimer.stop();
+        return;
+    }
+    m_autosaveTimer.start(ms);
+}
+
+bool ScenarioDocument::autosaveNow(QString* error) {
+    if (!isModified())
+        return true;
+    const QString dir = autosaveDirectory();
+    if (dir.isEmpty() || !QDir().mkpath(dir)) {
+        setError(error, tr("cannot create the autosave folder \"%1\"").arg(dir));
+        return false;
+    }
+    // Relative paths are rewritten to stay valid next to the autosave file.
+    Scenario copy = m_scenario;
+    rebaseScenarioPaths(copy, toStd(dir));
+    const auto writeBytes = [](const QByteArray& bytes) {
+        return [bytes](const std::string& tmpPath) {
+            QFile file(QString::fromStdString(tmpPath));
+            if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() ||
+                !file.flush())
+                return Status::error(tmpPath + ": " + file.errorString().toStdString());
+            return Status::success();
+        };
+    };
+    Status status = writeAtomically(toStd(autosavePath()), writeBytes(scenarioJsonText(copy)));
+    if (status) {
+        const QJsonObject info{{"file", m_filePath},
+                               {"written", QDateTime::currentDateTimeUtc().toString(Qt::ISODate)}};
+        status = writeAtomically(
+            toStd(QDir(dir).filePath(QLatin1String(kAutosaveInfoFileName))),
+            writeBytes(QJsonDocument(info).toJson()));
+    }
+    if (!status) {
+        setError(error, fromStd(status.message()));
+        return false;
+    }
+    m_ownsAutosave = true;
+    return true;
+}
+
+QString ScenarioDocument::autosaveOriginalFile() const {
+    QFile file(QDir(autosaveDirectory()).filePath(QLatin1String(kAutosaveInfoFileName)));
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    return QJsonDocument::fromJson(file.read(1 << 20)).object().value("file").toString();
+}
+
+QString ScenarioDocument::recoverableAutosave() const {
+    const QFileInfo autosave(autosavePath());
+    if (!autosave.isFile())
+        return {};
+    const QString original = autosaveOriginalFile();
+    if (!original.isEmpty()) {
+        const QFileInfo file(original);
+        // Saved after the autosave was written: nothing to recover.
+        if (file.exists() && file.lastModified() > autosave.lastModified())
+            return {};
+    }
+    return autosave.absoluteFilePath();
+}
+
+bool ScenarioDocument::recover(QString* error) {
+    const QString path = recoverableAutosave();
+    if (path.isEmpty()) {
+        setError(error, tr("there is no autosave to recover"));
+        return false;
+    }
+    Scenario loaded;
+    ScenarioDiagnostics diag;
+    const Status status = loadScenario(toStd(path), loaded, diag);
+    if (!status) {
+        const QString lines = errorLines(diag, path);
+        setError(error, lines.isEmpty() ? fromStd(status.message()) : lines);
+        return false;
+    }
+    const QString original = autosaveOriginalFile();
+    if (!original.isEmpty())
+        rebaseScenarioPaths(loaded, toStd(QFileInfo(original).absolutePath()));
+    reset(std::move(loaded), original, true);
+    m_ownsAutosave = true; // removed when the recovered document is saved or closed
+    return true;
+}
+
+void ScenarioDocument::discardAutosave() {
+    QFile::remove(autosavePath());
+    QFile::remove(QDir(autosaveDirectory()).filePath(QLatin1String(kAutosaveInfoFileName)));
+    m_ownsAutosave = false;
+}
+
+void ScenarioDocument::removeOwnAutosave() {
+    if (m_ownsAutosave)
+        discardAutosave();
+}
+
+// ---- Edits -----------------------------------------------------------------------------
+
+void ScenarioDocument::notify(unsigned parts) {
+    if (parts & CutSettingsPart)
+        emit cutSettingsChanged();
+    if (parts & StrokesPart)
+        emit strokesChanged();
+    if (parts & SweepsPart)
+        emit sweepsChanged();
+    if (parts & EffectsPart)
+        emit effectsChanged();
+    if (parts & MetadataPart)
+        emit metadataChanged();
+    emit changed();
+}
+
+void ScenarioDocument::pushCutSettings(const CutSettings& after, int field) {
+    if (after == m_scenario.cut)
+        return;
+    m_undo.push(
+        new SetCutSettingsCommand(*this, m_scenario.cut, after, static_cast<CutField>(field)));
+}
+
+void ScenarioDocument::setCutSettings(const CutSettings& settings) {
+    pushCutSettings(settings, static_cast<int>(CutField::All));
+}
+
+void ScenarioDocument::setMethod(CutMethod method) {
+    CutSettings s = m_scenario.cut;
+    s.method = method;
+    pushCutSettings(s, static_cast<int>(CutField::Method));
+}
+
+void ScenarioDocument::setTriangulation(FaceTriangulation triangulation) {
+    CutSettings s = m_scenario.cut;
+    s.triangulation = triangulation;
+    pushCutSettings(s, static_cast<int>(CutField::Triangulation));
+}
+
+void ScenarioDocument::setD(double d) {
+    CutSettings s = m_scenario.cut;
+    s.d = d;
+    pushCutSettings(s, static_cast<int>(CutField::D));
+}
+
+void ScenarioDocument::setSnap(bool snap) {
+    CutSettings s = m_scenario.cut;
+    s.snap = snap;
+    pushCutSettings(s, static_cast<int>(CutField::Snap));
+}
+
+void ScenarioDocument::setRelaxSteps(int steps) {
+    CutSettings s = m_scenario.cut;
+    s.relaxSteps = steps;
+    pushCutSettings(s, static_cast<int>(CutField::RelaxSteps));
+}
+
+void ScenarioDocument::setWSpring(double w) {
+    CutSettings s = m_scenario.cut;
+    s.wSpring = w;
+    pushCutSettings(s, static_cast<int>(CutField::WSpring));
+}
+
+void ScenarioDocument::setWParticle(double w) {
+    CutSettings s = m_scenario.cut;
+    s.wParticle = w;
+    pushCutSettings(s, static_cast<int>(CutField::WParticle));
+}
+
+void ScenarioDocument::setRelaxDamping(double damping) {
+    CutSettings s = m_scenario.cut;
+    s.damping = damping;
+    pushCutSettings(s, static_cast<int>(CutField::Damping));
+}
+
+void ScenarioDocument::setRings(int rings) {
+    CutSettings s = m_scenario.cut;
+    s.rings = rings;
+    pushCutSettings(s, static_cast<int>(CutField::Rings));
+}
+
+void ScenarioDocument::addStroke(const Stroke& stroke, int index) {
+    m_undo.push(new AddStrokeCommand(*this, stroke, index));
+}
+
+bool ScenarioDocument::removeStroke(int index) {
+    if (index < 0 || index >= static_cast<int>(m_scenario.strokes.size()))
+        return false;
+    m_undo.push(new RemoveStrokeCommand(*this, index));
+    return true;
+}
+
+void ScenarioDocument::addSweep(const SweepSpec& sweep, int index) {
+    m_undo.push(new AddSweepCommand(*this, sweep, index));
+}
+
+bool ScenarioDocument::removeSweep(int index) {
+    if (index < 0 || index >= static_cast<int>(m_scenario.sweeps.size()))
+        return false;
+    m_undo.push(new RemoveSweepCommand(*this, index));
+    return true;
+}
+
+bool ScenarioDocument::isEffectEnabled(const QString& name) const {
+    return m_scenario.findEffect(toStd(name)) != nullptr;
+}
+
+bool ScenarioDocument::setEffectEnabled(const QString& name, bool enabled) {
+    const std::string key = toStd(name);
+    const auto& known = knownEffectNames();
+    if (std::find(known.begin(), known.end(), key) == known.end())
+        return false;
+    const EffectSpec* current = m_scenario.findEffect(key);
+    if ((current != nullptr) == enabled)
+        return true;
+    EffectSpec effect;
+    effect.name = key;
+    if (enabled) {
+        if (m_offEffectParameters.contains(name))
+            effect.parameters = m_offEffectParameters.value(name).toObject();
+        else if (key == "tool-contact")
+            effect.parameters = {{"radius", kDefaultToolContactRadius}};
+    } else {
+        m_offEffectParameters.insert(name, current->parameters);
+    }
+    m_undo.push(new SetEffectEnabledCommand(*this, std::move(effect), enabled));
+    return true;
+}
+
+bool ScenarioDocument::toggleEffect(const QString& name) {
+    return setEffectEnabled(name, !isEffectEnabled(name));
+}
+
+void ScenarioDocument::setTitle(const QString& title) {
+    const std::string after = toStd(title);
+    if (after == m_scenario.metadata.title)
+        return;
+    m_undo.push(new SetTitleCommand(*this, m_scenario.metadata.title, after));
+}
+
+} // namespace resect

@@ -1,0 +1,192 @@
+#pragma once
+// ScenarioDocument: the studio's document model (issue 8), the single source of truth that
+// the views observe. It owns one resect::Scenario (scenario/scenario_document.h) and a
+// QUndoStack; every edit is an undoable command (widgets/scenario_commands.h), so views
+// never write to the scenario directly: they call the edit methods below and listen to the
+// signals, which fire for the edit itself and again for its undo and redo.
+//
+// Files:
+//  - open() reads and validates (scenario_load.h); on failure the document is unchanged and
+//    the message lists every error, one per line, each naming the JSON path;
+//  - save()/saveAs() write atomically through saveScenario (a failed save leaves the old
+//    file as it was) and mark the undo stack clean; isModified() is "not at the clean state";
+//  - recent files live in QSettings (key kRecentFilesKey, at most kMaxRecentFiles, most
+//    recent first, no duplicates); the settings are the application's (organisation and
+//    application name) unless a QSettings is injected with setSettings() (tests);
+//  - autosave: autosaveNow() (or the timer of setAutosaveInterval) writes a modified document
+//    to kAutosaveFileName in autosaveDirectory() (QStandardPaths::AppLocalDataLocation unless
+//    set), with kAutosaveInfoFileName naming the file it belongs to. A clean save, close()
+//    or loading another document removes the autosave this document wrote; destroying the
+//    object does not (a crash and a plain exit look the same), so the main window calls
+//    close() after its unsaved-changes prompt. At start-up, before loading anything, it asks
+//    recoverableAutosave() and offers recover() or discardAutosave().
+//    There is one autosave per autosave folder: two studios running at once share it.
+
+#include "scenario/scenario_document.h"
+
+#include <QObject>
+#include <QString>
+#include <QStringList>
+#include <QTimer>
+#include <QUndoStack>
+
+#include <memory>
+
+class QSettings;
+
+namespace resect {
+
+class ScenarioCommand;
+
+class ScenarioDocument : public QObject {
+    Q_OBJECT
+
+public:
+    static constexpr int kMaxRecentFiles = 8;
+    static constexpr const char* kRecentFilesKey = "recentFiles";
+    static constexpr const char* kAutosaveFileName = "autosave.resect.json";
+    static constexpr const char* kAutosaveInfoFileName = "autosave.info.json";
+    /// Radius (mm) of the tool-contact effect when it is switched on for the first time
+    /// (the effect requires one; scenario_document.h). The wire of a resectoscope loop is
+    /// about 0.3 mm thick; 0.5 leaves a small margin.
+    static constexpr double kDefaultToolContactRadius = 0.5;
+
+    /// Which part of the scenario an edit touched (commands report it; see notify()).
+    enum Part : unsigned {
+        CutSettingsPart = 1u << 0,
+        StrokesPart = 1u << 1,
+        SweepsPart = 1u << 2,
+        EffectsPart = 1u << 3,
+        MetadataPart = 1u << 4,
+        AllParts = 0xffu,
+    };
+
+    explicit ScenarioDocument(QObject* parent = nullptr);
+    ~ScenarioDocument() override;
+
+    const Scenario& scenario() const { return m_scenario; }
+    QUndoStack* undoStack() { return &m_undo; }
+    /// The file the document was opened from or saved to; empty for a new document.
+    const QString& filePath() const { return m_filePath; }
+    /// The file name, or "untitled" for a new document (for the window title).
+    QString displayName() const;
+    bool isModified() const { return !m_undo.isClean(); }
+
+    // ---- Files ------------------------------------------------------------------------
+    /// A new, unsaved document with the built-in anatomy "sample:NAME" (polyp or myoma), a
+    /// default tool (a half loop, 7 mm wide), the deformation effect and default cut
+    /// settings; valid as it is. False (document unchanged) for an unknown name.
+    bool newFromSample(const QString& name, QString* error = nullptr);
+    /// Reads and validates `path`. On failure returns false, the document is unchanged and
+    /// *error lists every error (one per line, "FILE: PATH: MESSAGE").
+    bool open(const QString& path, QString* error = nullptr);
+    /// Saves to filePath() (an error if there is none). See saveAs().
+    bool save(QString* error = nullptr);
+    /// Validates and writes atomically (saveScenario); on success the document's file is
+    /// `path`, its relative paths are rebased to the new folder, the undo stack is clean, the
+    /// file heads the recent files and this document's autosave is removed. On failure the
+    /// document, its file name and any existing file at `path` are unchanged.
+    bool saveAs(const QString& path, QString* error = nullptr);
+    /// Closes the document: an empty scenario, no file, a clear undo stack; removes this
+    /// document's autosave. (The caller asks about unsaved changes first.)
+    void close();
+
+    // ---- Recent files -------------------------------------------------------------------
+    /// Not owned; must outlive the document. Null: the application's QSettings.
+    void setSettings(QSettings* settings) { m_settings = settings; }
+    QStringList recentFiles() const;
+    /// Puts `path` (made absolute) first, removing an older entry for it and anything beyond
+    /// kMaxRecentFiles. open() and saveAs() call it.
+    void addRecentFile(const QString& path);
+    void clearRecentFiles();
+
+    // ---- Autosave -----------------------------------------------------------------------
+    /// Empty: QStandardPaths::AppLocalDataLocation.
+    void setAutosaveDirectory(const QString& dir) { m_autosaveDir = dir; }
+    QString autosaveDirectory() const;
+    QString autosavePath() const;
+    /// Calls autosaveNow() every `ms` milliseconds; 0 stops it.
+    void setAutosaveInterval(int ms);
+    /// Writes the document to the autosave file if it is modified (atomically, not
+    /// validated: an unfinished edit is still worth keeping). True if written or nothing to
+    /// do.
+    bool autosaveNow(QString* error = nullptr);
+    /// The autosave file if one is there that a crashed session left behind and that is
+    /// newer than the file it belongs to (or belongs to no file); empty otherwise.
+    QString recoverableAutosave() const;
+    /// The file the recoverable autosave belongs to; empty for an untitled document.
+    QString autosaveOriginalFile() const;
+    /// Loads the autosave as a modified document (its file name is the file it belongs to,
+    /// if any). The autosave stays until the document is saved or closed.
+    bool recover(QString* error = nullptr);
+    /// Removes the autosave files (the user chose not to recover).
+    void discardAutosave();
+
+    // ---- Edits (each pushes one undoable command; an edit that changes nothing pushes
+    // none). Consecutive changes of the same numeric setting merge into one undo step.
+    void setCutSettings(const CutSettings& settings);
+    void setMethod(CutMethod method);
+    void setTriangulation(FaceTriangulation triangulation);
+    void setD(double d);
+    void setSnap(bool snap);
+    void setRelaxSteps(int steps);
+    void setWSpring(double w);
+    void setWParticle(double w);
+    void setRelaxDamping(double damping);
+    void setRings(int rings);
+
+    /// Inserts at `index` (-1 or out of range: appends).
+    void addStroke(const Stroke& stroke, int index = -1);
+    /// False for an index out of range.
+    bool removeStroke(int index);
+    void addSweep(const SweepSpec& sweep, int index = -1);
+    bool removeSweep(int index);
+
+    bool isEffectEnabled(const QString& name) const;
+    /// Adds or removes the named effect (knownEffectNames()); an effect switched back on gets
+    /// the parameters it had when it was switched off (else its defaults). False for an
+    /// unknown name.
+    bool setEffectEnabled(const QString& name, bool enabled);
+    bool toggleEffect(const QString& name);
+
+    void setTitle(const QString& title);
+
+signals:
+    /// Any edit, undo or redo, and a newly loaded document.
+    void changed();
+    void cutSettingsChanged();
+    void strokesChanged();
+    void sweepsChanged();
+    void effectsChanged();
+    void metadataChanged();
+    /// A different document was loaded (new, open, recover, close): views rebuild.
+    void documentReset();
+    void fileChanged(const QString& path);
+    void modifiedChanged(bool modified);
+    void recentFilesChanged();
+
+private:
+    friend class ScenarioCommand;
+
+    /// Called by commands after they changed `parts` of m_scenario.
+    void notify(unsigned parts);
+    /// Replaces the whole document (not undoable): clears the undo stack, sets the file.
+    void reset(Scenario scenario, const QString& filePath, bool modified);
+    void setFilePath(const QString& path);
+    void removeOwnAutosave();
+    void pushCutSettings(const CutSettings& after, int field);
+    QSettings& settings() const;
+
+    Scenario m_scenario;
+    QUndoStack m_undo;
+    QString m_filePath;
+    QSettings* m_settings = nullptr;
+    mutable std::unique_ptr<QSettings> m_appSettings; ///< created on demand
+    QString m_autosaveDir;
+    QTimer m_autosaveTimer;
+    bool m_ownsAutosave = false; ///< this document wrote (or recovered) the autosave
+    /// Parameters of effects switched off, to restore when switched on again.
+    QJsonObject m_offEffectParameters;
+};
+
+} // namespace resect
