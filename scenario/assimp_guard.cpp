@@ -352,7 +352,9 @@ QByteArray gltfJson(const QByteArray& file) {
 /// assimp 5.2's glTF 2 reader dereferences a null vertex array for a LINE_LOOP primitive
 /// without positions (killing the process with SIGSEGV). A primitive without a POSITION
 /// attribute has nothing to read anyway: reject every glTF file (text or binary, whatever
-/// its extension, since assimp recognises glTF by content too) that has one.
+/// its extension, since assimp recognises glTF by content too) that has one. The JSON must
+/// be valid: assimp's parser takes invalid UTF-8 that Qt's refuses, so a key "POSITI\xcfN"
+/// would otherwise hide a primitive without positions from this check.
 Status checkGltfPrimitives(const std::string& path) {
     QFile file(QString::fromStdString(path));
     if (!file.open(QIODevice::ReadOnly))
@@ -361,10 +363,15 @@ Status checkGltfPrimitives(const std::string& path) {
     if (!head.startsWith("glTF") && !head.trimmed().startsWith('{'))
         return Status::success();
     const QByteArray json = gltfJson(file.readAll());
+    if (json.isEmpty())
+        return Status::success(); // no JSON chunk: assimp reports the damage
     QJsonParseError error;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &error);
-    if (error.error != QJsonParseError::NoError || !doc.isObject())
-        return Status::success(); // not glTF JSON: assimp decides
+    if (error.error != QJsonParseError::NoError)
+        return Status::error(path + ": not valid glTF JSON (" + error.errorString().toStdString() +
+                             " at offset " + std::to_string(error.offset) + ")");
+    if (!doc.isObject())
+        return Status::success(); // not glTF: assimp decides
     const QJsonArray meshes = doc.object().value("meshes").toArray();
     for (qsizetype m = 0; m < meshes.size(); ++m) {
         const QJsonArray primitives = meshes[m].toObject().value("primitives").toArray();

@@ -13,6 +13,7 @@
 #include "scenario/atomic_file.h"
 #include "scenario/mesh_io_detail.h"
 
+#include <assimp/BaseImporter.h>
 #include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -26,6 +27,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <set>
 #include <unordered_map>
 #include <vector>
 
@@ -170,12 +172,39 @@ Status repairPrimitiveTypes(const std::string& path, const aiScene& scene) {
     return Status::success();
 }
 
+/// Unregisters every importer of `importer` that does not list `ext` (".ply") when some
+/// importer does, so that a file is read by its extension's importers only. Otherwise
+/// assimp hands a file its importers reject to any importer whose content sniffing accepts
+/// it (a 21-byte ".gltf" that mentions "IndexArray" went to the OpenGEX importer, which
+/// loops forever on it; tests/fuzz_regressions/surface_gltf). Returns the unregistered
+/// importers, which the caller owns: an Importer deletes only its registered ones.
+std::vector<std::unique_ptr<Assimp::BaseImporter>> keepImportersFor(Assimp::Importer& importer,
+                                                                    const std::string& ext) {
+    std::vector<std::unique_ptr<Assimp::BaseImporter>> removed;
+    const std::string bare = ext.empty() ? ext : ext.substr(1);
+    if (bare.empty() || !importer.GetImporter(bare.c_str()))
+        return removed; // no importer claims the extension: assimp decides by content
+    std::vector<Assimp::BaseImporter*> others;
+    for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
+        Assimp::BaseImporter* candidate = importer.GetImporter(i);
+        std::set<std::string> extensions;
+        candidate->GetExtensionList(extensions);
+        if (!extensions.count(bare))
+            others.push_back(candidate);
+    }
+    for (Assimp::BaseImporter* other : others)
+        if (importer.UnregisterLoader(other) == aiReturn_SUCCESS)
+            removed.emplace_back(other);
+    return removed;
+}
+
 Status readSurfaceImpl(const std::string& path, TriangleSurface& out) {
     if (Status s = detail::checkRegularFile(path); !s)
         return s;
     if (Status s = detail::checkAssimpInput(path); !s)
         return s;
     Assimp::Importer importer;
+    const auto unregistered = keepImportersFor(importer, lowerExtension(path));
     const auto failure = [&] {
         const char* why = importer.GetErrorString();
         return Status::error(path + ": assimp cannot read the file (" +

@@ -357,7 +357,7 @@ void TestSurfaceIo::badInputs_data() {
     QTest::newRow("garbage glb") << "junk.glb" << QByteArray("glTF\x02\0\0\0\xff\xff\xff\xff", 12)
                                  << "assimp cannot read the file";
     QTest::newRow("truncated gltf")
-        << "cut.gltf" << gltfWithTransforms().left(300) << "assimp cannot read the file";
+        << "cut.gltf" << gltfWithTransforms().left(300) << "not valid glTF JSON";
     QTest::newRow("unknown format")
         << "mesh.xyz" << QByteArray("hello\n") << "assimp cannot read the file";
     QTest::newRow("only lines and points")
