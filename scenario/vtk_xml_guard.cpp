@@ -50,22 +50,25 @@ bool attribute(std::string_view tag, std::string_view name, std::string_view& va
     return false;
 }
 
-/// Parses an unsigned decimal attribute; false if absent or not a number.
+/// Parses an unsigned decimal attribute the way VTK does (std::istream >>): leading blanks,
+/// an optional '+', then the digits up to the first other character, so "4.9" is 4 (a
+/// stricter parse let a damaged offset="4.9" past the checks below while VTK read offset 4).
+/// False if absent or without digits (VTK then fails to read it); beyond 19 digits the value
+/// saturates.
 bool unsignedAttribute(std::string_view tag, std::string_view name, std::uint64_t& value) {
     std::string_view text;
     if (!attribute(tag, name, text))
         return false;
     while (!text.empty() && isSpace(text.front()))
         text.remove_prefix(1);
-    while (!text.empty() && isSpace(text.back()))
-        text.remove_suffix(1);
-    if (text.empty() || text.size() > 19 ||
-        !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
-        return false;
+    if (!text.empty() && text.front() == '+')
+        text.remove_prefix(1);
+    std::size_t digits = 0;
     value = 0;
-    for (char c : text)
-        value = value * 10 + static_cast<std::uint64_t>(c - '0');
-    return true;
+    for (; digits < text.size() && text[digits] >= '0' && text[digits] <= '9'; ++digits)
+        value =
+            digits >= 19 ? UINT64_MAX : value * 10 + static_cast<std::uint64_t>(text[digits] - '0');
+    return digits > 0;
 }
 
 /// The start tags `<name ...>` in `xml`, each without the angle brackets, with the offset
