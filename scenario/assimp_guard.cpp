@@ -349,9 +349,13 @@ QByteArray gltfJson(const QByteArray& file) {
     return trimmed.startsWith('{') ? file : QByteArray();
 }
 
-/// assimp 5.2's glTF 2 reader dereferences a null vertex array for a LINE_LOOP primitive
-/// without positions (killing the process with SIGSEGV). A primitive without a POSITION
-/// attribute has nothing to read anyway: reject every glTF file (text or binary, whatever
+/// glTF primitive mode 2.
+constexpr double kGltfLineLoop = 2;
+
+/// assimp 5.2's glTF 2 reader dereferences a null pointer (SIGSEGV) for a LINE_LOOP primitive
+/// without positions, and for one whose vertex data are damaged: LINE_LOOP primitives are
+/// rejected (the surface reader drops lines anyway). A primitive without a POSITION
+/// attribute has nothing to read either: reject every glTF file (text or binary, whatever
 /// its extension, since assimp recognises glTF by content too) that has one. The JSON must
 /// be valid: assimp's parser takes invalid UTF-8 that Qt's refuses, so a key "POSITI\xcfN"
 /// would otherwise hide a primitive without positions from this check.
@@ -373,12 +377,40 @@ Status checkGltfPrimitives(const std::string& path) {
     if (!doc.isObject())
         return Status::success(); // not glTF: assimp decides
     const QJsonArray meshes = doc.object().value("meshes").toArray();
+    const QJsonArray accessors = doc.object().value("accessors").toArray();
     for (qsizetype m = 0; m < meshes.size(); ++m) {
         const QJsonArray primitives = meshes[m].toObject().value("primitives").toArray();
-        for (qsizetype p = 0; p < primitives.size(); ++p)
-            if (!primitives[p].toObject().value("attributes").toObject().contains("POSITION"))
-                return Status::error(path + ": glTF meshes[" + std::to_string(m) + "].primitives[" +
-                                     std::to_string(p) + "] has no POSITION attribute");
+        for (qsizetype p = 0; p < primitives.size(); ++p) {
+            const QJsonObject primitive = primitives[p].toObject();
+            const std::string at =
+                "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
+            if (!primitive.value("attributes").toObject().contains("POSITION"))
+                return Status::error(path + ": glTF " + at + " has no POSITION attribute");
+            // Strips and fans need 3 vertices (line strips 2): assimp computes its face
+            // count as count - 2 unchecked (an accessor count of 0 made it allocate 64 GB).
+            const double mode = primitive.value("mode").toDouble(4);
+            const QJsonValue used =
+                primitive.contains("indices")
+                    ? primitive.value("indices")
+                    : primitive.value("attributes").toObject().value("POSITION");
+            const double index = used.toDouble(-1);
+            const double count = index >= 0 && index < static_cast<double>(accessors.size())
+                                     ? accessors.at(static_cast<qsizetype>(index))
+                                           .toObject()
+                                           .value("count")
+                                           .toDouble(0)
+                                     : 0;
+            if ((mode == 5 || mode == 6) && count < 3)
+                return Status::error(path + ": glTF " + at +
+                                     " is a triangle strip or fan of fewer than 3 vertices");
+            if (mode == 3 && count < 2)
+                return Status::error(path + ": glTF " + at +
+                                     " is a line strip of fewer than 2 vertices");
+            if (primitive.value("mode").toDouble(-1) == kGltfLineLoop)
+                return Status::error(path + ": glTF " + at +
+                                     " is a LINE_LOOP (mode 2), which is not read: only "
+                                     "triangles are, and assimp 5.2 crashes on damaged loops");
+        }
     }
     return Status::success();
 }

@@ -17,9 +17,9 @@ namespace resect::detail {
 ///    over a list count of 48 million in a 200-byte file for seconds, allocating gigabytes);
 ///  - OFF: the dimension and counts are at most the file size (assimp allocates and
 ///    initialises its arrays from them first);
-///  - glTF (text or binary): the JSON is valid and every mesh primitive has a POSITION
-///    attribute (assimp dereferences a null vertex array for a LINE_LOOP primitive without
-///    one).
+///  - glTF (text or binary): the JSON is valid, every mesh primitive has a POSITION
+///    attribute and none is a LINE_LOOP (assimp dereferences a null pointer for a LINE_LOOP
+///    without positions or with damaged ones).
 /// Errors name the file. Files of other formats, and damage assimp reports itself, are left
 /// to assimp.
 Status checkAssimpInput(const std::string& path);
