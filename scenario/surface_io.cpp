@@ -92,6 +92,8 @@ public:
                             hasUv ? Eigen::Vector2d(mesh.mTextureCoords[0][v].x,
                                                     mesh.mTextureCoords[0][v].y)
                                   : Eigen::Vector2d::Zero();
+                        if (!uv.allFinite())
+                            return Status::error(m_path + ": a texture coordinate is not finite");
                         m_surface.uvs.push_back(uv); // kept only if every mesh has uvs
                     }
                     m_remap[v] = it->second;

@@ -11,7 +11,8 @@
 namespace resect {
 
 /// Reads every mesh of the file (node transforms applied), triangulated and welded. Errors
-/// (missing or unreadable file, no triangles, non-finite coordinates) name the file.
+/// (missing or unreadable file, no triangles, non-finite coordinates or texture
+/// coordinates) name the file.
 Status readSurface(const std::string& path, TriangleSurface& out);
 
 /// Writes atomically with the assimp exporter chosen by extension (.obj, .stl, .ply,
