@@ -723,7 +723,11 @@ void readEffects(Context& c, const QJsonValue& v, std::vector<EffectSpec>& out) 
         if (known && !names.insert(e.name).second)
             c.error(f.at("name"), "effect '" + e.name + "' declared twice");
         const QJsonValue pv = f.take("parameters");
-        if (!pv.isUndefined() && asObject(c, pv, f.at("parameters"), e.parameters) && known)
+        // Absent parameters are an empty object (as saving writes them): required ones are
+        // still missing (found by fuzz_scenario: a tool-contact without "parameters" was
+        // accepted, written with "parameters": {} and then refused).
+        const bool object = pv.isUndefined() || asObject(c, pv, f.at("parameters"), e.parameters);
+        if (object && known)
             checkEffectParameters(c, e.name, e.parameters, f.at("parameters"));
         e.extra = f.unknown();
         out.push_back(std::move(e));
