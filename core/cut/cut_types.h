@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace resect {
@@ -82,6 +83,12 @@ struct CutChanges {
     std::unordered_map<int, std::int8_t> tetSide;
     /// All nodes whose incident tets changed (masses and stiffnesses need updating).
     std::vector<int> touchedNodes;
+    /// Scheme (Figure 4) of every original tet the cut classified, as (tet, scheme) sorted by
+    /// tet. A tet created by the cut was produced by the scheme of its parent
+    /// (parentOfNewTet); for inspection and overlays.
+    std::vector<std::pair<int, Scheme>> tetScheme;
+    /// The scheme of original tet t, or Scheme::None if the cut did not classify it.
+    Scheme schemeOf(int t) const;
 };
 
 } // namespace resect

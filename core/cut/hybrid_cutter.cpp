@@ -103,8 +103,12 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
     stats.cutNodes = static_cast<int>(selection.cutNodes.size());
     stats.cutEdges = static_cast<int>(selection.cutEdges.size());
     stats.maxCutNodeDistance = selection.maxCutNodeDistance;
-    for (const TetCut& tc : selection.tets)
+    changes.tetScheme.reserve(selection.tets.size());
+    for (const TetCut& tc : selection.tets) {
         ++stats.schemeCount[static_cast<int>(tc.scheme)];
+        changes.tetScheme.emplace_back(tc.tet, tc.scheme);
+    }
+    std::sort(changes.tetScheme.begin(), changes.tetScheme.end());
     changes.cutNodes = selection.cutNodes;
 
     // Keep what is needed to roll back: the nodes of every tet that may change.

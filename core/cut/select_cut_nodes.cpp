@@ -87,6 +87,11 @@ const char* schemeName(Scheme s) {
     return "?";
 }
 
+Scheme CutChanges::schemeOf(int t) const {
+    const auto it = std::lower_bound(tetScheme.begin(), tetScheme.end(), std::pair<int, Scheme>{t, Scheme::None});
+    return it != tetScheme.end() && it->first == t ? it->second : Scheme::None;
+}
+
 CutSelection selectCutNodes(const TetMesh& mesh, const SweepSurface& sweep,
                             const IntersectedEdges& crossed, const SelectOptions& options) {
     CutSelection sel;

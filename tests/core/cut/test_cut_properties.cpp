@@ -11,6 +11,8 @@
 
 #include <QTest>
 
+#include <algorithm>
+#include <array>
 #include <random>
 
 using namespace resect;
@@ -211,6 +213,19 @@ private slots:
             QVERIFY(copy >= nodes);
             QVERIFY((mesh.ref(orig) - mesh.ref(copy)).norm() == 0);
         }
+        // The per-tet schemes agree with the scheme counts, and every decomposed tet and every
+        // parent of a new tet has one.
+        std::array<int, 10> counted{};
+        for (const auto& [t, scheme] : c.tetScheme) {
+            QVERIFY(t >= 0 && t < tets);
+            QCOMPARE(c.schemeOf(t), scheme);
+            ++counted[static_cast<int>(scheme)];
+        }
+        QVERIFY(counted == r.stats.schemeCount);
+        QVERIFY(std::is_sorted(c.tetScheme.begin(), c.tetScheme.end()));
+        for (int parent : c.parentOfNewTet)
+            QVERIFY(c.schemeOf(parent) != Scheme::None);
+        QCOMPARE(c.schemeOf(-1), Scheme::None);
         QVERIFY(r.stats.timeMs.total >= 0);
     }
 };
