@@ -1,6 +1,7 @@
 #include "widgets/vtk_viewport.h"
 
 #include "widgets/opengl_support.h"
+#include "widgets/viewport_tool.h"
 #include "widgets/vtk_gl_widget.h"
 
 #include <QLabel>
@@ -10,6 +11,7 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkProp.h>
 #include <vtkRenderer.h>
 
 #include <algorithm>
@@ -69,6 +71,8 @@ void VtkViewport::createGlWidget() {
     renderer->SetActiveCamera(m_camera.camera());
     renderer->AddActor(m_tetMesh.actor());
     renderer->AddActor(m_surface.actor());
+    for (vtkProp* prop : m_props)
+        renderer->AddViewProp(prop);
     connect(m_glWidget, &VtkGlWidget::frameRendered, this, &VtkViewport::frameRendered);
     connect(m_glWidget, &VtkGlWidget::initializationFailed, this,
             &VtkViewport::onGlInitializationFailed);
@@ -140,6 +144,35 @@ void VtkViewport::clear() {
     requestRender();
 }
 
+void VtkViewport::addProp(vtkProp* prop) {
+    if (prop == nullptr || std::find(m_props.begin(), m_props.end(), prop) != m_props.end())
+        return;
+    m_props.push_back(prop);
+    if (m_glWidget != nullptr)
+        m_glWidget->renderer()->AddViewProp(prop);
+    requestRender();
+}
+
+void VtkViewport::removeProp(vtkProp* prop) {
+    const auto it = std::find(m_props.begin(), m_props.end(), prop);
+    if (it == m_props.end())
+        return;
+    m_props.erase(it);
+    if (m_glWidget != nullptr)
+        m_glWidget->renderer()->RemoveViewProp(prop);
+    requestRender();
+}
+
+void VtkViewport::setTool(ViewportTool* tool) {
+    if (tool == m_tool)
+        return;
+    ViewportTool* previous = m_tool;
+    m_tool = tool;
+    m_toolGrab = false;
+    if (previous != nullptr)
+        previous->deactivated(*this);
+}
+
 Bounds VtkViewport::sceneBounds() const {
     return unite(m_tetMesh.bounds(), m_surface.bounds());
 }
@@ -175,6 +208,11 @@ void VtkViewport::cameraMoved() {
 }
 
 void VtkViewport::mousePressEvent(QMouseEvent* event) {
+    if (m_drag == Drag::None && m_tool != nullptr && m_tool->mousePress(*this, event)) {
+        m_toolGrab = true;
+        event->accept();
+        return;
+    }
     const Qt::KeyboardModifiers mods = event->modifiers();
     switch (event->button()) {
     case Qt::LeftButton:
@@ -197,6 +235,12 @@ void VtkViewport::mousePressEvent(QMouseEvent* event) {
 }
 
 void VtkViewport::mouseMoveEvent(QMouseEvent* event) {
+    // A tool sees hover moves too (no button held) and the drags it started.
+    if (m_tool != nullptr && (m_toolGrab || m_drag == Drag::None) &&
+        m_tool->mouseMove(*this, event)) {
+        event->accept();
+        return;
+    }
     if (m_drag == Drag::None) {
         QWidget::mouseMoveEvent(event);
         return;
@@ -226,6 +270,13 @@ void VtkViewport::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void VtkViewport::mouseReleaseEvent(QMouseEvent* event) {
+    if (m_toolGrab) {
+        m_toolGrab = false;
+        if (m_tool != nullptr)
+            m_tool->mouseRelease(*this, event);
+        event->accept();
+        return;
+    }
     if (m_drag == Drag::None) {
         QWidget::mouseReleaseEvent(event);
         return;

@@ -21,14 +21,17 @@
 #include <QWidget>
 
 #include <array>
+#include <vector>
 
 class QLabel;
 class QVBoxLayout;
 class vtkCamera;
+class vtkProp;
 
 namespace resect {
 
 class VtkGlWidget;
+class ViewportTool;
 
 class VtkViewport : public QWidget {
     Q_OBJECT
@@ -42,8 +45,23 @@ public:
     void setTetMesh(const TetMesh& mesh);
     /// Shows a triangle surface in tissue colour; frames the scene if nothing else is shown.
     void setSurface(const TriangleSurface& surface);
-    /// Removes everything from the view.
+    /// Removes the meshes from the view (extra props stay).
     void clear();
+
+    /// The rendering adapters, for display options (overlays, clipping, ...).
+    TetMeshActor& tetMeshActor() { return m_tetMesh; }
+    SurfaceActor& surfaceActor() { return m_surface; }
+
+    /// Adds a prop (sweep surface, tool, handles, legend, ...) to the scene; not owned, the
+    /// caller keeps it alive until removeProp(). Works without rendering too (kept for when
+    /// a renderer exists). Adding a prop twice adds it once.
+    void addProp(vtkProp* prop);
+    void removeProp(vtkProp* prop);
+
+    /// The interaction tool that gets mouse events first (viewport_tool.h); not owned.
+    /// Null: camera navigation only. Setting another tool deactivates the previous one.
+    void setTool(ViewportTool* tool);
+    ViewportTool* tool() const { return m_tool; }
 
     /// Frames the bounds of everything shown, keeping the view direction.
     void resetCamera();
@@ -101,6 +119,9 @@ private:
 
     Drag m_drag = Drag::None;
     QPoint m_lastPos;
+    ViewportTool* m_tool = nullptr;
+    bool m_toolGrab = false; ///< the tool consumed the press: it gets the move/release too
+    std::vector<vtkProp*> m_props;
 };
 
 } // namespace resect
