@@ -27,31 +27,52 @@ bool ScenarioRun::allPassed() const {
     return std::all_of(expectations.begin(), expectations.end(), [](const ExpectationResult& e) { return e.passed; });
 }
 
-Status planTissue(const Scenario& scenario, const TissueSpec& tissue, ReplayPlan& plan) {
-    plan = {};
+Status loadTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh& mesh, TriangleSurface& surface,
+                  const std::atomic<bool>* cancel) {
     const std::string where = "tissue '" + tissue.name + "'";
-    plan.material = tissue.material.toMaterial();
-    TriangleSurface surface;
+    const Material material = tissue.material.toMaterial();
+    TriangleSurface loaded;
+    TetMesh meshed;
     if (!tissue.surface.empty()) {
         const std::string source =
             isSampleSource(tissue.surface) ? tissue.surface : resolveScenarioPath(scenario.baseDir, tissue.surface);
-        if (Status s = loadAnatomy(source, surface); !s.ok())
+        if (Status s = loadAnatomy(source, loaded); !s.ok())
             return Status::error(where + ": " + s.message());
     }
     if (!tissue.mesh.empty()) {
-        if (Status s = readTetMesh(resolveScenarioPath(scenario.baseDir, tissue.mesh), plan.mesh); !s.ok())
+        if (Status s = readTetMesh(resolveScenarioPath(scenario.baseDir, tissue.mesh), meshed); !s.ok())
             return Status::error(where + ": " + s.message());
-        computeLumpedMasses(plan.mesh, plan.material.density);
+        computeLumpedMasses(meshed, material.density);
     } else {
-        if (surface.triangles.empty())
+        if (loaded.triangles.empty())
             return Status::error(where + ": needs a surface to mesh or a tet mesh");
         AnatomyMeshing meshing;
         meshing.meshing.edgeLength = tissue.meshing.edgeLength;
         meshing.meshing.seed = tissue.meshing.seed;
-        meshing.material = plan.material;
-        if (Status s = meshAnatomy(surface, meshing, plan.mesh); !s.ok())
+        meshing.meshing.cancel = cancel;
+        meshing.material = material;
+        if (Status s = meshAnatomy(loaded, meshing, meshed); !s.ok())
             return Status::error(where + ": " + s.message());
     }
+    mesh = std::move(meshed);
+    surface = std::move(loaded);
+    return Status::success();
+}
+
+Status planTissue(const Scenario& scenario, const TissueSpec& tissue, ReplayPlan& plan) {
+    TetMesh mesh;
+    TriangleSurface surface;
+    if (Status s = loadTissue(scenario, tissue, mesh, surface); !s.ok())
+        return s;
+    return planLoadedTissue(scenario, tissue, std::move(mesh), std::move(surface), plan);
+}
+
+Status planLoadedTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh mesh, TriangleSurface surface,
+                        ReplayPlan& plan) {
+    plan = {};
+    const std::string where = "tissue '" + tissue.name + "'";
+    plan.material = tissue.material.toMaterial();
+    plan.mesh = std::move(mesh);
     plan.surface = std::move(surface);
 
     // Cuts: strokes (with the tool's points at every pose, for tool contact), then sweeps.

@@ -8,6 +8,8 @@
 
 #include <QJsonObject>
 
+#include <atomic>
+
 #include <string>
 #include <vector>
 
@@ -36,6 +38,15 @@ struct ScenarioRun {
 /// loads its surface, turns strokes and sweeps into cuts and the effects into simulator
 /// settings. Errors name the tissue, file or field.
 Status planTissue(const Scenario& scenario, const TissueSpec& tissue, ReplayPlan& plan);
+/// The first half of planTissue: loads the tissue's surface (if any) and its tet mesh, read
+/// or meshed (masses from its material). Meshing stops with an error when *cancel turns
+/// true. On failure the outputs are unchanged.
+Status loadTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh& mesh, TriangleSurface& surface,
+                  const std::atomic<bool>* cancel = nullptr);
+/// The second half: the plan for an already loaded tissue (the studio plans on the mesh it
+/// has cut; fixed nodes are those of `mesh` inside the fixed regions).
+Status planLoadedTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh mesh, TriangleSurface surface,
+                        ReplayPlan& plan);
 
 /// Replays every tissue and evaluates the expectations. Progress covers all tissues.
 Status runScenario(const Scenario& scenario, ScenarioRun& out, const ReplayProgress& progress = {});

@@ -108,6 +108,31 @@ bool ScenarioDocument::newFromSample(const QString& name, QString* error) {
     return true;
 }
 
+bool ScenarioDocument::newFromAnatomy(const QString& path, QString* error) {
+    const QFileInfo info(path);
+    if (!info.exists() || !info.isFile()) {
+        setError(error, tr("%1: no such file").arg(path));
+        return false;
+    }
+    const QString suffix = info.suffix().toLower();
+    const bool tetMesh = suffix == QLatin1String("vtu") || suffix == QLatin1String("msh") ||
+                         suffix == QLatin1String("node") || suffix == QLatin1String("ele");
+    Scenario s;
+    s.metadata.title = toStd(tr("New %1 scenario").arg(info.completeBaseName()));
+    TissueSpec tissue;
+    tissue.name = toStd(info.completeBaseName().isEmpty() ? QStringLiteral("tissue") : info.completeBaseName());
+    // Absolute until the first save, which rewrites it relative to the scenario's folder.
+    (tetMesh ? tissue.mesh : tissue.surface) = toStd(info.absoluteFilePath());
+    s.tissues.push_back(std::move(tissue));
+    s.tool = defaultTool();
+    EffectSpec deformation;
+    deformation.name = "deformation";
+    s.effects.push_back(std::move(deformation));
+    removeOwnAutosave();
+    reset(std::move(s), QString(), false);
+    return true;
+}
+
 bool ScenarioDocument::open(const QString& path, QString* error) {
     Scenario loaded;
     ScenarioDiagnostics diag;

@@ -77,6 +77,11 @@ public:
     /// default tool (a half loop, 7 mm wide), the deformation effect and default cut
     /// settings; valid as it is. False (document unchanged) for an unknown name.
     bool newFromSample(const QString& name, QString* error = nullptr);
+    /// A new, unsaved document whose tissue is the anatomy in `path`: a tet mesh (.vtu, .msh,
+    /// .node, .ele) used as it is, or any surface assimp reads, meshed coarsely when the
+    /// tissue is loaded (TissueSession). The file is only checked to exist here; reading
+    /// errors come from loading. False (document unchanged) if there is no such file.
+    bool newFromAnatomy(const QString& path, QString* error = nullptr);
     /// Reads and validates `path`. On failure returns false, the document is unchanged and
     /// *error lists every error (one per line, "FILE: PATH: MESSAGE").
     bool open(const QString& path, QString* error = nullptr);

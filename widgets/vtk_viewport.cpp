@@ -117,16 +117,21 @@ void VtkViewport::onGlInitializationFailed(const QString& reason) {
     emit renderingUnavailable(reason);
 }
 
-void VtkViewport::setTetMesh(const TetMesh& mesh) {
+void VtkViewport::setTetMesh(const TetMesh& mesh, bool frame) {
     m_tetMesh.setMesh(mesh);
     m_nodeCount = mesh.nodeCount();
     m_tetCount = mesh.tetCount();
     updatePlaceholderText();
-    resetCamera();
+    if (frame) {
+        resetCamera();
+    } else {
+        m_camera.fitClippingRange(sceneBounds());
+        requestRender();
+    }
 }
 
-void VtkViewport::setSurface(const TriangleSurface& surface) {
-    const bool frame = m_tetMesh.empty();
+void VtkViewport::setSurface(const TriangleSurface& surface, bool frameIfAlone) {
+    const bool frame = frameIfAlone && m_tetMesh.empty();
     m_surface.setSurface(surface);
     m_triangleCount = surface.triangleCount();
     updatePlaceholderText();

@@ -41,10 +41,12 @@ public:
     ~VtkViewport() override;
 
     /// Shows the mesh's boundary coloured by the radius ratio of the owning tet, with the
-    /// element edges, and frames it (resetCamera()). An empty mesh clears the view.
-    void setTetMesh(const TetMesh& mesh);
-    /// Shows a triangle surface in tissue colour; frames the scene if nothing else is shown.
-    void setSurface(const TriangleSurface& surface);
+    /// element edges; with `frame`, frames it (resetCamera()), else keeps the camera (a cut
+    /// or a simulation step). An empty mesh clears it from the view.
+    void setTetMesh(const TetMesh& mesh, bool frame = true);
+    /// Shows a triangle surface in tissue colour; with `frame`, frames the scene if nothing
+    /// else is shown.
+    void setSurface(const TriangleSurface& surface, bool frame = true);
     /// Removes the meshes from the view (extra props stay).
     void clear();
 

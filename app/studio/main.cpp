@@ -11,6 +11,7 @@
 
 #include "core/mesher/samples.h"
 #include "widgets/opengl_support.h"
+#include "widgets/tissue_session.h"
 #include "widgets/vtk_viewport.h"
 
 #include <QApplication>
@@ -80,6 +81,7 @@ int main(int argc, char* argv[]) {
     // QOpenGLWidget contexts agree on one VTK-suitable format.
     QSurfaceFormat::setDefaultFormat(resect::vtkSurfaceFormat());
     QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("Resect"));
     QApplication::setApplicationName(QStringLiteral("resect-studio"));
     QApplication::setApplicationVersion(QStringLiteral("0.1.0"));
 
@@ -155,7 +157,7 @@ int main(int argc, char* argv[]) {
     const bool screenshot = !screenshotPath.isEmpty();
 
     resect::MainWindow window;
-    window.resize(1100, 800);
+    window.resize(1280, 800);
     window.setErrorDialogsEnabled(!screenshot);
 
     if (screenshot) {
@@ -174,6 +176,8 @@ int main(int argc, char* argv[]) {
             QApplication::exit(0);
         };
         QObject::connect(&window, &resect::MainWindow::meshLoaded, &app, [&window, grabAndQuit] {
+            // The document's cuts come with the tissue; wait for anything still running.
+            window.session().waitForIdle(kScreenshotTimeoutMs);
             resect::VtkViewport* viewport = window.viewport();
             if (!viewport->hasRendering()) {
                 // Placeholder only: nothing to wait for beyond a normal repaint.
@@ -206,9 +210,15 @@ int main(int argc, char* argv[]) {
     }
 
     window.show();
-    if (openPath.isEmpty())
-        window.openSample(sample);
-    else
-        window.openFile(openPath);
+    // A crashed session's autosave is offered first, unless the command line names what to
+    // open or only wants a screenshot.
+    const bool recovered = !screenshot && openPath.isEmpty() && !parser.isSet(sampleOption) &&
+                           window.offerRecovery();
+    if (!recovered) {
+        if (openPath.isEmpty())
+            window.openSample(sample);
+        else
+            window.openFile(openPath);
+    }
     return QApplication::exec();
 }

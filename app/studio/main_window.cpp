@@ -1,210 +1,440 @@
 #include "main_window.h"
 
-#include "core/mesh/masses.h"
-#include "core/mesh/material.h"
-#include "core/mesh/quality.h"
-#include "core/mesher/tetrahedralize.h"
-#include "scenario/mesh_io.h"
-#include "scenario/surface_io.h"
+#include "widgets/cut_panel.h"
+#include "widgets/scenario_document.h"
+#include "widgets/simulation_controller.h"
+#include "widgets/simulation_panel.h"
+#include "widgets/tissue_session.h"
 #include "widgets/vtk_viewport.h"
 
 #include <QAction>
-#include <QFile>
+#include <QActionGroup>
+#include <QCloseEvent>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QKeySequence>
 #include <QLabel>
 #include <QMenuBar>
-#include <QMessageBox>
-#include <QMetaObject>
 #include <QProgressDialog>
+#include <QScrollArea>
+#include <QSettings>
 #include <QStatusBar>
+#include <QToolBar>
+#include <QUndoStack>
 
-#include <exception>
-#include <string>
-#include <utility>
+#include <vtkActor.h>
 
 namespace resect {
 
 namespace {
 
-/// Extensions readTetMesh() understands; anything else is read as a surface and meshed.
-bool isTetMeshFile(const QString& path) {
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    return suffix == QLatin1String("vtu") || suffix == QLatin1String("msh") ||
-           suffix == QLatin1String("node") || suffix == QLatin1String("ele");
+bool isScenarioFile(const QString& path) {
+    return QFileInfo(path).suffix().compare(QLatin1String("json"), Qt::CaseInsensitive) == 0;
 }
 
-/// Meshes a surface with the default options and gives the nodes lumped masses.
-Status meshSurface(const TriangleSurface& surface, const std::atomic<bool>& cancel, TetMesh& out) {
-    MeshingOptions options;
-    options.cancel = &cancel;
-    TetMesh mesh;
-    Status status = tetrahedralize(surface, options, mesh);
-    if (!status.ok())
-        return status;
-    computeLumpedMasses(mesh, Material{}.density);
-    out = std::move(mesh);
-    return Status::success();
+/// A dock holding `widget` in a scroll area, closable and movable.
+QDockWidget* makeDock(const QString& title, const QString& name, QWidget* widget, QWidget* parent) {
+    auto* dock = new QDockWidget(title, parent);
+    dock->setObjectName(name);
+    auto* scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setWidget(widget);
+    dock->setWidget(scroll);
+    return dock;
 }
 
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
-    setWindowTitle(tr("Resect Studio"));
+    setObjectName(QStringLiteral("mainWindow"));
+    m_document = new ScenarioDocument(this);
+    m_session = new TissueSession(*m_document, this);
+    m_simulation = new SimulationController(*m_document, *m_session, this);
 
     m_viewport = new VtkViewport(this);
+    m_viewport->setObjectName(QStringLiteral("viewport"));
     setCentralWidget(m_viewport);
 
-    QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
-    m_openAction = fileMenu->addAction(tr("&Open..."));
-    m_openAction->setShortcut(QKeySequence::Open);
-    connect(m_openAction, &QAction::triggered, this, &MainWindow::openFileDialog);
-    fileMenu->addSeparator();
-    QAction* quitAction = fileMenu->addAction(tr("&Quit"));
-    quitAction->setShortcut(QKeySequence::Quit);
-    connect(quitAction, &QAction::triggered, this, &QMainWindow::close);
+    m_cutPanel = new CutPanel(*m_document, *m_session);
+    m_simulationPanel = new SimulationPanel(*m_document, *m_simulation);
+    createActions();
+    createDocks();
 
     m_statusLabel = new QLabel(this);
+    m_statusLabel->setObjectName(QStringLiteral("statusSummary"));
     statusBar()->addPermanentWidget(m_statusLabel, 1);
+
+    connect(m_document, &ScenarioDocument::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &ScenarioDocument::fileChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &ScenarioDocument::documentReset, this, &MainWindow::updateTitle);
+    connect(m_document, &ScenarioDocument::metadataChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &ScenarioDocument::recentFilesChanged, this, &MainWindow::updateRecentMenu);
+    connect(m_session, &TissueSession::busyChanged, this, &MainWindow::onBusyChanged);
+    connect(m_document, &ScenarioDocument::documentReset, this, [this] { m_frameNext = true; });
+    connect(m_session, &TissueSession::baseChanged, this, &MainWindow::onBaseChanged);
+    connect(m_session, &TissueSession::currentChanged, this, [this] { refreshView(false); });
+    connect(m_session, &TissueSession::previewChanged, this, [this] { refreshView(false); });
+    connect(m_session, &TissueSession::failed, this, [this](const QString& message) {
+        if (!m_loadedOnce || !m_session->base())
+            emit loadFailed(message);
+        showError(tr("The tissue could not be loaded or cut."), message);
+    });
+    connect(m_simulation, &SimulationController::stepped, this, [this] { refreshView(false); });
+    connect(m_simulation, &SimulationController::resetDone, this, [this] { refreshView(false); });
+    connect(m_simulation, &SimulationController::failed, this, [this](const QString& message) {
+        statusBar()->showMessage(message, 10000);
+    });
+    connect(m_cutPanel, &CutPanel::applyFailed, this,
+            [this](const QString& message) { showError(tr("The cut was not applied."), message); });
+
+    m_document->setAutosaveInterval(60'000);
+    updateTitle();
+    updateRecentMenu();
     updateStatus();
 }
 
-MainWindow::~MainWindow() {
-    // The worker only touches its own data and posts its result to this object; stop it
-    // before the object goes away (the posted result is then discarded with the object).
-    m_cancel = true;
-    if (m_worker.joinable())
-        m_worker.join();
-}
+MainWindow::~MainWindow() = default;
 
-void MainWindow::openSample(Sample sample) {
-    const QString name = QString::fromStdString(sampleName(sample));
-    startLoad(name, [sample](const std::atomic<bool>& cancel, TetMesh& out) {
-        return meshSurface(sampleSurface(sample), cancel, out);
+void MainWindow::createActions() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QMenu* newMenu = file->addMenu(tr("&New from sample"));
+    for (const std::string& name : sampleNames()) {
+        const QString sample = QString::fromStdString(name);
+        QAction* a = newMenu->addAction(sample == QLatin1String("polyp")   ? tr("&Polyp")
+                                        : sample == QLatin1String("myoma") ? tr("&Myoma")
+                                                                           : sample);
+        a->setObjectName(QStringLiteral("newSample_") + sample);
+        connect(a, &QAction::triggered, this, [this, sample] { newFromSample(sample); });
+    }
+    QAction* open = file->addAction(tr("&Open..."), this, &MainWindow::openFileDialog);
+    open->setShortcut(QKeySequence::Open);
+    QAction* import = file->addAction(tr("&Import anatomy..."), this, &MainWindow::importAnatomyDialog);
+    import->setObjectName(QStringLiteral("importAnatomy"));
+    m_recentMenu = file->addMenu(tr("Open &recent"));
+    file->addSeparator();
+    QAction* saveAction = file->addAction(tr("&Save"), this, [this] { save(); });
+    saveAction->setShortcut(QKeySequence::Save);
+    QAction* saveAsAction = file->addAction(tr("Save &as..."), this, &MainWindow::saveAsDialog);
+    saveAsAction->setShortcut(QKeySequence::SaveAs);
+    file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    undo->setObjectName(QStringLiteral("undo"));
+    QAction* redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    redo->setObjectName(QStringLiteral("redo"));
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    QMenu* cut = menuBar()->addMenu(tr("&Cut"));
+    QAction* apply = cut->addAction(tr("&Apply pending cut"), this, [this] {
+        QString error;
+        if (!m_session->applyPending(&error))
+            showError(tr("The cut was not applied."), error);
     });
-}
+    apply->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Return));
+    cut->addAction(tr("&Discard pending cut"), m_session, &TissueSession::discardPending);
 
-void MainWindow::openFile(const QString& path) {
-    const std::string file = QFile::encodeName(path).toStdString();
-    const QString title = QFileInfo(path).fileName();
-    if (isTetMeshFile(path)) {
-        startLoad(title, [file](const std::atomic<bool>&, TetMesh& out) {
-            return readTetMesh(file, out);
-        });
-    } else {
-        startLoad(title, [file](const std::atomic<bool>& cancel, TetMesh& out) {
-            TriangleSurface surface;
-            Status status = readSurface(file, surface);
-            if (!status.ok())
-                return status;
-            status = meshSurface(surface, cancel, out);
-            if (!status.ok())
-                return Status::error(file + ": " + status.message());
-            return Status::success();
-        });
+    QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
+    QAction* play = sim->addAction(tr("&Play / pause"), this, [this] {
+        if (m_simulation->isPlaying())
+            m_simulation->pause();
+        else
+            m_simulation->play();
+    });
+    play->setShortcut(QKeySequence(Qt::Key_Space));
+    sim->addAction(tr("&Step"), m_simulation, &SimulationController::step);
+    sim->addAction(tr("&Reset"), m_simulation, &SimulationController::reset);
+
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    m_viewMenu->addAction(tr("&Reset camera"), m_viewport, &VtkViewport::resetCamera);
+    m_showTets = m_viewMenu->addAction(tr("Show &tet mesh"));
+    m_showTets->setCheckable(true);
+    m_showTets->setChecked(true);
+    m_showSurface = m_viewMenu->addAction(tr("Show high-resolution &surface"));
+    m_showSurface->setCheckable(true);
+    m_showSurface->setChecked(false);
+    const auto applyVisibility = [this] {
+        m_viewport->tetMeshActor().actor()->SetVisibility(m_showTets->isChecked());
+        m_viewport->surfaceActor().actor()->SetVisibility(m_showSurface->isChecked());
+        m_viewport->requestRender();
+    };
+    connect(m_showTets, &QAction::toggled, this, applyVisibility);
+    connect(m_showSurface, &QAction::toggled, this, applyVisibility);
+    applyVisibility();
+    m_viewMenu->addSeparator();
+
+    QMenu* language = menuBar()->addMenu(tr("&Language"));
+    auto* languages = new QActionGroup(this);
+    const QString chosen = QSettings().value(QStringLiteral("language")).toString();
+    const std::pair<QString, QString> names[] = {{QString(), tr("System default")},
+                                                 {QStringLiteral("en"), QStringLiteral("English")},
+                                                 {QStringLiteral("de"), QStringLiteral("Deutsch")},
+                                                 {QStringLiteral("fr"), QStringLiteral("Français")}};
+    for (const auto& [code, title] : names) {
+        QAction* a = language->addAction(title);
+        a->setCheckable(true);
+        a->setChecked(code == chosen);
+        languages->addAction(a);
+        connect(a, &QAction::triggered, this, [this, code] { setLanguagePreference(code); });
     }
 }
 
-template <typename Job> void MainWindow::startLoad(const QString& title, Job job) {
-    if (m_worker.joinable()) {
-        emit loadFailed(tr("%1: another file is still loading").arg(title));
+void MainWindow::createDocks() {
+    QDockWidget* cutDock = makeDock(tr("Cut"), QStringLiteral("cutDock"), m_cutPanel, this);
+    addDockWidget(Qt::RightDockWidgetArea, cutDock);
+    QDockWidget* simDock = makeDock(tr("Simulation"), QStringLiteral("simulationDock"), m_simulationPanel, this);
+    addDockWidget(Qt::RightDockWidgetArea, simDock);
+    tabifyDockWidget(cutDock, simDock);
+    cutDock->raise();
+    m_viewMenu->addAction(cutDock->toggleViewAction());
+    m_viewMenu->addAction(simDock->toggleViewAction());
+}
+
+bool MainWindow::isLoading() const { return m_session->isBusy(); }
+
+void MainWindow::showError(const QString& title, const QString& message) {
+    emit errorReported(message);
+    statusBar()->showMessage(title, 10000);
+    if (!m_errorDialogs)
+        return;
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Resect Studio"), title, QMessageBox::Ok, this);
+    box->setInformativeText(message);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+bool MainWindow::maybeSave() {
+    if (!m_document->isModified())
+        return true;
+    QMessageBox::StandardButton answer = m_unsavedAnswer;
+    if (answer == QMessageBox::NoButton)
+        answer = QMessageBox::warning(this, tr("Resect Studio"),
+                                      tr("%1 has unsaved changes. Save them?").arg(m_document->displayName()),
+                                      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+                                      QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!maybeSave()) {
+        event->ignore();
         return;
     }
-    m_cancel = false;
-    m_openAction->setEnabled(false);
-    statusBar()->showMessage(tr("Loading %1...").arg(title));
-
-    m_progress =
-        new QProgressDialog(tr("Loading and meshing %1...").arg(title), tr("Cancel"), 0, 0, this);
-    m_progress->setWindowTitle(tr("Resect Studio"));
-    m_progress->setMinimumDuration(500);
-    m_progress->setAutoClose(false);
-    m_progress->setAutoReset(false);
-    connect(m_progress, &QProgressDialog::canceled, this, &MainWindow::cancelLoad);
-
-    m_worker = std::thread([this, title, job = std::move(job)]() mutable {
-        LoadResult result;
-        result.title = title;
-        try {
-            const Status status = job(m_cancel, result.mesh);
-            if (!status.ok())
-                result.error = QString::fromStdString(status.message());
-        } catch (const std::exception& e) {
-            result.error = tr("%1: internal error: %2").arg(title, QString::fromUtf8(e.what()));
-        } catch (...) {
-            result.error = tr("%1: internal error").arg(title);
-        }
-        if (result.error.isEmpty())
-            result.summary = summarizeQuality(result.mesh);
-        QMetaObject::invokeMethod(
-            this, [this, result = std::move(result)]() mutable { finishLoad(std::move(result)); },
-            Qt::QueuedConnection);
-    });
+    m_simulation->pause();
+    m_session->cancel();
+    m_document->close(); // removes this document's autosave: a clean exit
+    event->accept();
 }
 
-void MainWindow::finishLoad(LoadResult result) {
-    if (m_worker.joinable())
-        m_worker.join();
+void MainWindow::newFromSample(const QString& name) {
+    if (!maybeSave())
+        return;
+    QString error;
+    if (!m_document->newFromSample(name, &error))
+        showError(tr("Could not create the scenario."), error);
+}
+
+void MainWindow::openSample(Sample sample) { newFromSample(QString::fromStdString(sampleName(sample))); }
+
+void MainWindow::openFile(const QString& path) {
+    if (!maybeSave())
+        return;
+    QString error;
+    const bool ok = isScenarioFile(path) ? m_document->open(path, &error) : m_document->newFromAnatomy(path, &error);
+    if (!ok) {
+        emit loadFailed(error);
+        showError(tr("Could not open %1.").arg(QFileInfo(path).fileName()), error);
+    }
+}
+
+bool MainWindow::save() {
+    if (m_document->filePath().isEmpty()) {
+        saveAsDialog();
+        return !m_document->isModified() && !m_document->filePath().isEmpty();
+    }
+    QString error;
+    if (!m_document->save(&error)) {
+        showError(tr("The scenario was not saved."), error);
+        return false;
+    }
+    statusBar()->showMessage(tr("Saved %1").arg(m_document->filePath()), 5000);
+    return true;
+}
+
+bool MainWindow::saveAs(const QString& path) {
+    QString error;
+    if (!m_document->saveAs(path, &error)) {
+        showError(tr("The scenario was not saved."), error);
+        return false;
+    }
+    statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+    return true;
+}
+
+void MainWindow::saveAsDialog() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save scenario"), m_document->filePath(),
+                                                      tr("Scenarios (*.json)"));
+    if (!path.isEmpty())
+        saveAs(path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive) ? path : path + QStringLiteral(".json"));
+}
+
+void MainWindow::openFileDialog() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open scenario or anatomy"), QString(),
+        tr("Scenarios (*.json);;Tet meshes (*.vtu *.msh *.node *.ele);;"
+           "Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;All files (*)"));
+    if (!path.isEmpty())
+        openFile(path);
+}
+
+void MainWindow::importAnatomyDialog() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Import anatomy"), QString(),
+        tr("Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;"
+           "Tet meshes (*.vtu *.msh *.node *.ele);;All files (*)"));
+    if (path.isEmpty() || !maybeSave())
+        return;
+    QString error;
+    if (!m_document->newFromAnatomy(path, &error))
+        showError(tr("Could not import %1.").arg(QFileInfo(path).fileName()), error);
+}
+
+bool MainWindow::offerRecovery() {
+    const QString autosave = m_document->recoverableAutosave();
+    if (autosave.isEmpty())
+        return false;
+    const QString original = m_document->autosaveOriginalFile();
+    const auto answer = QMessageBox::question(
+        this, tr("Resect Studio"),
+        tr("Resect Studio did not close properly. Recover the unsaved changes to %1?")
+            .arg(original.isEmpty() ? tr("an untitled scenario") : original),
+        QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
+    QString error;
+    if (answer == QMessageBox::Yes) {
+        if (m_document->recover(&error))
+            return true;
+        showError(tr("The autosave could not be recovered."), error);
+    } else {
+        m_document->discardAutosave();
+    }
+    return false;
+}
+
+void MainWindow::updateTitle() {
+    QString title = m_document->displayName();
+    const std::string& t = m_document->scenario().metadata.title;
+    if (!t.empty())
+        title = QString::fromStdString(t) + QStringLiteral(" (") + title + QLatin1Char(')');
+    setWindowTitle(tr("%1[*] - Resect Studio").arg(title));
+    setWindowModified(m_document->isModified());
+}
+
+void MainWindow::updateRecentMenu() {
+    m_recentMenu->clear();
+    const QStringList files = m_document->recentFiles();
+    for (const QString& f : files)
+        m_recentMenu->addAction(QFileInfo(f).fileName(), this, [this, f] { openFile(f); })->setToolTip(f);
+    if (!files.isEmpty()) {
+        m_recentMenu->addSeparator();
+        m_recentMenu->addAction(tr("Clear list"), m_document, &ScenarioDocument::clearRecentFiles);
+    }
+    m_recentMenu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::updateStatus() {
+    const auto current = m_session->current();
+    if (!current) {
+        m_statusLabel->setText(isLoading() ? tr("Loading...") : tr("No tissue"));
+        return;
+    }
+    m_statusLabel->setText(tr("%1: %2 nodes, %3 tets, %4 pieces, min radius ratio %5, stable dt %6 s")
+                               .arg(current->tissueName)
+                               .arg(current->mesh.nodeCount())
+                               .arg(current->mesh.tetCount())
+                               .arg(current->pieces)
+                               .arg(current->quality.minRadiusRatio, 0, 'g', 3)
+                               .arg(current->stableDt, 0, 'g', 3));
+}
+
+void MainWindow::onBusyChanged(bool busy) {
+    updateStatus();
+    if (busy) {
+        if (m_progress == nullptr) {
+            m_progress = new QProgressDialog(tr("Loading and meshing the tissue..."), tr("Cancel"), 0, 0, this);
+            m_progress->setObjectName(QStringLiteral("loadProgress"));
+            m_progress->setWindowTitle(tr("Resect Studio"));
+            m_progress->setMinimumDuration(800);
+            m_progress->setAutoClose(false);
+            m_progress->setAutoReset(false);
+            connect(m_progress, &QProgressDialog::canceled, m_session, &TissueSession::cancel);
+        }
+        return;
+    }
     if (m_progress != nullptr) {
         m_progress->hide();
         m_progress->deleteLater();
         m_progress = nullptr;
     }
-    m_openAction->setEnabled(true);
-    statusBar()->clearMessage();
+}
 
-    if (!result.error.isEmpty()) {
-        const bool cancelled = m_cancel.load();
-        statusBar()->showMessage(cancelled ? tr("Loading %1 cancelled").arg(result.title)
-                                           : tr("Loading %1 failed").arg(result.title),
-                                 5000);
-        if (m_errorDialogs && !cancelled) {
-            auto* box =
-                new QMessageBox(QMessageBox::Warning, tr("Resect Studio"),
-                                tr("Could not open %1.").arg(result.title), QMessageBox::Ok, this);
-            box->setInformativeText(result.error);
-            box->setAttribute(Qt::WA_DeleteOnClose);
-            box->open();
-        }
-        emit loadFailed(result.error);
+void MainWindow::onBaseChanged() {
+    if (!m_session->base()) {
+        m_viewport->clear();
+        updateStatus();
         return;
     }
+    // Frame the tissue when it is first shown (its cuts may still be being applied).
+    m_frameNext = true;
+    refreshView(false);
+}
 
-    m_mesh = std::move(result.mesh);
-    m_summary = result.summary;
-    m_title = result.title;
-    setWindowTitle(tr("%1 - Resect Studio").arg(m_title));
-    m_viewport->setTetMesh(m_mesh);
+void MainWindow::refreshView(bool frame) {
+    // What is shown: the preview of a pending cut, else the simulated tissue once it has
+    // moved, else the current tissue.
+    const auto preview = m_session->preview();
+    const auto current = m_session->current();
+    const TetMesh* mesh = nullptr;
+    const TriangleSurface* surface = nullptr;
+    if (preview) {
+        mesh = &preview->mesh;
+        surface = &preview->surface.surface();
+    } else if (m_simulation->isReady() && m_simulation->steps() > 0) {
+        mesh = &m_simulation->mesh();
+        surface = &m_simulation->surface().surface();
+    } else if (current) {
+        mesh = &current->mesh;
+        surface = &current->surface.surface();
+    }
+    if (mesh == nullptr) {
+        updateStatus();
+        return;
+    }
+    frame = frame || m_frameNext;
+    m_frameNext = false;
+    m_viewport->setTetMesh(*mesh, frame);
+    m_viewport->setSurface(*surface, false);
     updateStatus();
-    emit meshLoaded();
-}
-
-void MainWindow::openFileDialog() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open mesh or surface"), QString(),
-                                     tr("Tet meshes (*.vtu *.msh *.node *.ele);;"
-                                        "Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf);;"
-                                        "All files (*)"));
-    if (!path.isEmpty())
-        openFile(path);
-}
-
-void MainWindow::cancelLoad() {
-    m_cancel = true;
-    statusBar()->showMessage(tr("Cancelling..."));
-}
-
-void MainWindow::updateStatus() {
-    if (m_mesh.empty()) {
-        m_statusLabel->setText(tr("No mesh"));
-        return;
+    if (frame) {
+        m_loadedOnce = true;
+        emit meshLoaded();
     }
-    m_statusLabel->setText(tr("%1: %2 nodes, %3 tets, min radius ratio %4")
-                               .arg(m_title)
-                               .arg(m_summary.nodes)
-                               .arg(m_summary.tets)
-                               .arg(m_summary.minRadiusRatio, 0, 'f', 3));
+}
+
+void MainWindow::setLanguagePreference(const QString& code) {
+    QSettings settings;
+    if (code.isEmpty())
+        settings.remove(QStringLiteral("language"));
+    else
+        settings.setValue(QStringLiteral("language"), code);
+    statusBar()->showMessage(tr("The language changes when Resect Studio is started again."), 10000);
 }
 
 } // namespace resect

@@ -1,24 +1,31 @@
 #pragma once
-// MainWindow: the studio's main window. Thin: a VtkViewport in the middle, a status bar
-// with the mesh summary, and File > Open / Quit. Loading and meshing run on a worker
-// thread; the result comes back to the GUI thread through a queued call.
+// MainWindow: the studio's main window. It only assembles: the document model
+// (ScenarioDocument, the single source of truth with its undo stack), the tissue derived
+// from it on a worker thread (TissueSession), the simulation (SimulationController), the
+// 3-D view and the panels, which all observe the document; menus and tool bars call the
+// document's edits.
 
-#include "core/mesh/quality.h"
-#include "core/mesh/tet_mesh.h"
 #include "core/mesher/samples.h"
 
 #include <QMainWindow>
+#include <QMessageBox>
 #include <QString>
 
-#include <atomic>
-#include <thread>
+#include <memory>
 
 class QAction;
+class QCloseEvent;
 class QLabel;
+class QMenu;
 class QProgressDialog;
 
 namespace resect {
 
+class CutPanel;
+class ScenarioDocument;
+class SimulationController;
+class SimulationPanel;
+class TissueSession;
 class VtkViewport;
 
 class MainWindow : public QMainWindow {
@@ -28,51 +35,82 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    /// Meshes a built-in sample (samples.h) in the background.
+    /// A new scenario on a built-in sample, meshed in the background.
     void openSample(Sample sample);
-    /// Opens a tet mesh (.vtu, .msh, .node, .ele) or, for any other extension, a surface
-    /// that is read and tetrahedralized, in the background.
+    /// A scenario (.json) is opened; a tet mesh (.vtu, .msh, .node, .ele) or any surface
+    /// assimp reads starts a new scenario on that anatomy (a surface is meshed in the
+    /// background). Asks about unsaved changes first.
     void openFile(const QString& path);
+    /// Saves to the document's file, or asks for one. False if not saved.
+    bool save();
+    /// Saves to `path` (no dialog). False, with an error shown, if not saved.
+    bool saveAs(const QString& path);
 
-    bool isLoading() const { return m_worker.joinable(); }
+    bool isLoading() const;
     VtkViewport* viewport() const { return m_viewport; }
-    const TetMesh& mesh() const { return m_mesh; }
+    ScenarioDocument& document() { return *m_document; }
+    TissueSession& session() { return *m_session; }
+    SimulationController& simulation() { return *m_simulation; }
+    CutPanel* cutPanel() const { return m_cutPanel; }
+    SimulationPanel* simulationPanel() const { return m_simulationPanel; }
 
-    /// Whether load errors are shown in a message box (default) or only signalled.
+    /// Whether errors are shown in message boxes (default) or only signalled (tests, the
+    /// command line's --screenshot).
     void setErrorDialogsEnabled(bool enabled) { m_errorDialogs = enabled; }
+    /// The answer to "save the changes?" without asking (tests): Save, Discard or Cancel;
+    /// NoButton (default) asks.
+    void setUnsavedChangesAnswer(QMessageBox::StandardButton answer) { m_unsavedAnswer = answer; }
+    /// Offers to recover an autosave a crashed session left behind (start-up); true if a
+    /// document was recovered.
+    bool offerRecovery();
 
 signals:
-    /// A mesh was loaded and handed to the viewport.
+    /// A tissue was loaded (meshed) and shown.
     void meshLoaded();
     /// Loading failed; `message` names the input and what is wrong.
     void loadFailed(const QString& message);
+    /// An error was reported to the user (shown in a box unless dialogs are off).
+    void errorReported(const QString& message);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
 
 private:
-    /// Result of a background load, delivered to the GUI thread.
-    struct LoadResult {
-        QString title;
-        QString error; // empty on success
-        TetMesh mesh;
-        QualitySummary summary;
-    };
-    template <typename Job> void startLoad(const QString& title, Job job);
-    void finishLoad(LoadResult result);
+    void createActions();
+    void createDocks();
+    /// Asks about unsaved changes; true if it is fine to replace the document.
+    bool maybeSave();
     void openFileDialog();
-    void cancelLoad();
+    void importAnatomyDialog();
+    void saveAsDialog();
+    void newFromSample(const QString& name);
+    void showError(const QString& title, const QString& message);
+    void updateTitle();
+    void updateRecentMenu();
     void updateStatus();
+    void onBusyChanged(bool busy);
+    void onBaseChanged();
+    void refreshView(bool frame);
+    void setLanguagePreference(const QString& code);
+
+    ScenarioDocument* m_document = nullptr;
+    TissueSession* m_session = nullptr;
+    SimulationController* m_simulation = nullptr;
 
     VtkViewport* m_viewport = nullptr;
+    CutPanel* m_cutPanel = nullptr;
+    SimulationPanel* m_simulationPanel = nullptr;
     QLabel* m_statusLabel = nullptr;
-    QAction* m_openAction = nullptr;
     QProgressDialog* m_progress = nullptr;
+    QMenu* m_recentMenu = nullptr;
+    QMenu* m_viewMenu = nullptr;
+    QAction* m_showTets = nullptr;
+    QAction* m_showSurface = nullptr;
 
-    TetMesh m_mesh;
-    QualitySummary m_summary;
-    QString m_title;
     bool m_errorDialogs = true;
-
-    std::atomic<bool> m_cancel{false};
-    std::thread m_worker;
+    QMessageBox::StandardButton m_unsavedAnswer = QMessageBox::NoButton;
+    bool m_loadedOnce = false;
+    bool m_frameNext = false; ///< frame the next mesh shown (a new document or tissue)
 };
 
 } // namespace resect

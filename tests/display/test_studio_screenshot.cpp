@@ -71,6 +71,36 @@ QProcessEnvironment environmentWithPlatform(const QString& platform) {
     return env;
 }
 
+/// The 3-D view's part of the window: left of the docks, below the menu bar, above the
+/// status bar (the window is 1280 x 800 with the panels docked on the right).
+QRect viewRegion(const QImage& image) {
+    return QRect(int(0.03 * image.width()), int(0.1 * image.height()), int(0.5 * image.width()),
+                 int(0.78 * image.height()));
+}
+
+/// Pixels of the overlay's colour scale (hue 0 red .. 120 green), by hue band.
+struct QualityHues {
+    int red = 0, yellow = 0, green = 0;
+};
+QualityHues qualityHues(const QImage& image, const QRect& region) {
+    QualityHues h;
+    const QRect r = region.intersected(image.rect());
+    for (int y = r.top(); y <= r.bottom(); ++y)
+        for (int x = r.left(); x <= r.right(); ++x) {
+            const QColor c = QColor::fromRgb(image.pixel(x, y));
+            if (c.hsvSaturation() < 80 || c.value() < 60)
+                continue; // background, edges, shadows
+            const int hue = c.hsvHue();
+            if (hue >= 0 && hue < 25)
+                ++h.red;
+            else if (hue >= 25 && hue < 75)
+                ++h.yellow;
+            else if (hue >= 75 && hue <= 140)
+                ++h.green;
+        }
+    return h;
+}
+
 } // namespace
 
 class TestStudioScreenshot : public QObject {
@@ -86,12 +116,19 @@ private slots:
 
 void TestStudioScreenshot::rendersSampleUnderXvfb_data() {
     QTest::addColumn<QString>("sample");
-    QTest::newRow("polyp") << QStringLiteral("polyp");
-    QTest::newRow("myoma") << QStringLiteral("myoma");
+    QTest::addColumn<QStringList>("source");
+    QTest::newRow("polyp") << QStringLiteral("polyp") << QStringList{QStringLiteral("--sample"), QStringLiteral("polyp")};
+    QTest::newRow("myoma") << QStringLiteral("myoma") << QStringList{QStringLiteral("--sample"), QStringLiteral("myoma")};
+    // The bundled resection: three strokes cut the polyp's head off; the tets are coloured by
+    // radius ratio (the default quality overlay), so the small elements along the cut show.
+    QTest::newRow("cut polyp") << QStringLiteral("cut_polyp")
+                               << QStringList{QStringLiteral("--open"),
+                                              QStringLiteral(RESECT_SOURCE_DIR "/resources/scenarios/polyp-resection.json")};
 }
 
 void TestStudioScreenshot::rendersSampleUnderXvfb() {
     QFETCH(QString, sample);
+    QFETCH(QStringList, source);
     // A missing xvfb-run is a broken test environment, not a reason to skip.
     const QString xvfbRun = QStandardPaths::findExecutable(QStringLiteral("xvfb-run"));
     QVERIFY2(!xvfbRun.isEmpty(), "xvfb-run not found on PATH (Debian package xvfb)");
@@ -105,8 +142,8 @@ void TestStudioScreenshot::rendersSampleUnderXvfb() {
     const RunResult r =
         run(xvfbRun,
             {QStringLiteral("-a"), QStringLiteral("-s"), QStringLiteral("-screen 0 1280x1024x24"),
-             QStringLiteral(RESECT_STUDIO_EXE), QStringLiteral("--sample"), sample,
-             QStringLiteral("--screenshot"), png},
+             QStringLiteral(RESECT_STUDIO_EXE)} +
+                source + QStringList{QStringLiteral("--screenshot"), png},
             environmentWithPlatform(QStringLiteral("xcb")));
     QVERIFY2(r.finished && r.exitCode == 0, qPrintable(describe(r)));
 
@@ -116,14 +153,20 @@ void TestStudioScreenshot::rendersSampleUnderXvfb() {
 
     // The middle of the window is the 3-D view: it must show the view's background around
     // a lit, quality-coloured mesh.
-    const ImageStats stats =
-        analyseRegion(image, centralRegion(image, 0.8), viewportBackground(), 6);
+    const ImageStats stats = analyseRegion(image, viewRegion(image), viewportBackground(), 6);
     qInfo().noquote() << png << describe(stats);
     // What surrounds the mesh is the 3-D view's own background (VTK rendered into the window,
     // not the placeholder, not Qt's fill showing through a transparent frame), and the mesh
     // is framed in it, many shades of it.
     const QString problem = renderedViewProblem(stats, viewportBackground());
     QVERIFY2(problem.isEmpty(), qPrintable(png + QStringLiteral(": ") + problem));
+    // The quality overlay: red-to-green by radius ratio. The samples' tets are mostly
+    // yellow-green; the cut polyp has worse elements along its cut, so warmer hues appear.
+    const QualityHues hues = qualityHues(image, viewRegion(image));
+    qInfo().noquote() << png << "hues:" << hues.green << "green," << hues.yellow << "yellow," << hues.red << "red";
+    QVERIFY2(hues.green + hues.yellow > 500, "no quality-coloured mesh in the view");
+    if (sample == QLatin1String("cut_polyp"))
+        QVERIFY2(hues.red + hues.yellow > 50, "the cut shows no lower-quality elements");
 }
 
 void TestStudioScreenshot::offscreenFallsBackToPlaceholder() {

@@ -1,0 +1,266 @@
+// The studio's main window, driven like an author would (offscreen platform): open the
+// sample, draw a pending cut, tune d and watch the preview, apply, undo and redo, save and
+// reopen, open a corrupt file, run the simulation and toggle effects.
+
+#include "main_window.h"
+
+#include "widgets/cut_panel.h"
+#include "widgets/scenario_document.h"
+#include "widgets/simulation_controller.h"
+#include "widgets/simulation_panel.h"
+#include "widgets/tissue_session.h"
+#include "widgets/vtk_viewport.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace resect;
+
+namespace {
+
+constexpr int kWaitMs = 180'000;
+
+/// A horizontal plane through the tissue at `heightFraction` of its height.
+SweepSpec planeSweep(const TetMesh& mesh, double heightFraction) {
+    Vec3 lo = mesh.ref(0), hi = mesh.ref(0);
+    for (const Vec3& p : mesh.referencePositions()) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    const Vec3 pad = 0.1 * (hi - lo);
+    const double z = lo.z() + heightFraction * (hi.z() - lo.z());
+    SweepSpec s;
+    s.name = "plane";
+    s.curves = {{Vec3(lo.x() - pad.x(), lo.y() - pad.y(), z), Vec3(hi.x() + pad.x(), lo.y() - pad.y(), z)},
+                {Vec3(lo.x() - pad.x(), hi.y() + pad.y(), z), Vec3(hi.x() + pad.x(), hi.y() + pad.y(), z)}};
+    return s;
+}
+
+/// A window on the sample polyp, loaded, with errors signalled instead of shown.
+struct Studio {
+    MainWindow window;
+    Studio() {
+        window.setErrorDialogsEnabled(false);
+        window.resize(1200, 800);
+        window.show();
+    }
+    bool load(Sample sample = Sample::Polyp) {
+        QSignalSpy loaded(&window, &MainWindow::meshLoaded);
+        window.openSample(sample);
+        return loaded.wait(kWaitMs) && window.session().waitForIdle(kWaitMs);
+    }
+    bool idle() { return window.session().waitForIdle(kWaitMs); }
+    int tets() { return window.session().current()->mesh.tetCount(); }
+    QAction* action(const char* name) { return window.findChild<QAction*>(QString::fromLatin1(name)); }
+};
+
+} // namespace
+
+class TestStudioMainWindow : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+
+private slots:
+    void initTestCase() {
+        QVERIFY(m_dir.isValid());
+        // Settings and autosaves go to the test's folder, never the user's.
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+    }
+
+    void opensTheSample() {
+        Studio s;
+        QVERIFY(s.load());
+        QVERIFY(s.tets() > 100);
+        QVERIFY(s.window.windowTitle().contains(QStringLiteral("polyp")));
+        auto* status = s.window.findChild<QLabel*>(QStringLiteral("statusSummary"));
+        QVERIFY(status);
+        QVERIFY(status->text().contains(QString::number(s.tets())));
+        // The view shows the tissue (VTK data, also without OpenGL).
+        QVERIFY(!s.window.viewport()->tetMeshActor().empty());
+        QVERIFY(validBounds(s.window.viewport()->sceneBounds()));
+    }
+
+    void dChangesThePreviewApplyUndoRedo() {
+        Studio s;
+        QVERIFY(s.load());
+        const int tets = s.tets();
+        CutPanel* panel = s.window.cutPanel();
+        QCOMPARE(panel->previewValue(QStringLiteral("tets")), QString());
+
+        s.window.session().setPendingSweep(planeSweep(s.window.session().base()->mesh, 0.6));
+        QVERIFY(s.idle());
+        const QString at02 = panel->previewValue(QStringLiteral("added_tets"));
+        QVERIFY(!at02.isEmpty());
+
+        // Change d in the panel as an author would: type into the spin box.
+        auto* d = panel->findChild<QDoubleSpinBox*>(QStringLiteral("d"));
+        QVERIFY(d);
+        d->selectAll();
+        QTest::keyClicks(d, QStringLiteral("0.01"));
+        QTest::keyClick(d, Qt::Key_Enter);
+        QVERIFY(s.idle());
+        QCOMPARE(s.window.document().scenario().cut.d, 0.01);
+        const QString at001 = panel->previewValue(QStringLiteral("added_tets"));
+        QVERIFY2(at001 != at02, qPrintable(at001 + QStringLiteral(" vs ") + at02));
+        QVERIFY(at001.toInt() > at02.toInt()); // fewer cut nodes, more split edges
+        QCOMPARE(s.tets(), tets);              // the preview is not applied
+
+        // Apply with the panel's button: the tet count grows.
+        auto* apply = panel->findChild<QPushButton*>(QStringLiteral("applyCut"));
+        QVERIFY(apply && apply->isEnabled());
+        QTest::mouseClick(apply, Qt::LeftButton);
+        QVERIFY(s.idle());
+        const int cut = s.tets();
+        QCOMPARE(cut, tets + at001.toInt());
+        QCOMPARE(s.window.session().current()->pieces, 2);
+        QVERIFY(s.window.document().isModified());
+        QVERIFY(s.window.isWindowModified());
+
+        // Undo the cut, then the d change; redo both.
+        QAction* undo = s.action("undo");
+        QAction* redo = s.action("redo");
+        QVERIFY(undo && redo);
+        undo->trigger();
+        QVERIFY(s.idle());
+        QCOMPARE(s.tets(), tets);
+        undo->trigger();
+        QCOMPARE(s.window.document().scenario().cut.d, 0.2);
+        QCOMPARE(d->value(), 0.2); // the panel follows the document
+        redo->trigger();
+        redo->trigger();
+        QVERIFY(s.idle());
+        QCOMPARE(s.tets(), cut);
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    void saveReopenCompare() {
+        const QString path = m_dir.filePath(QStringLiteral("saved.json"));
+        Scenario saved;
+        {
+            Studio s;
+            QVERIFY(s.load());
+            s.window.session().setPendingSweep(planeSweep(s.window.session().base()->mesh, 0.55));
+            QVERIFY(s.idle());
+            QVERIFY(s.window.session().applyPending());
+            s.window.document().toggleEffect(QStringLiteral("gravity"));
+            QVERIFY(s.idle());
+            QVERIFY(s.window.saveAs(path));
+            QVERIFY(!s.window.document().isModified());
+            saved = s.window.document().scenario();
+        }
+        Studio s;
+        QSignalSpy loaded(&s.window, &MainWindow::meshLoaded);
+        s.window.openFile(path);
+        QVERIFY(loaded.wait(kWaitMs));
+        QVERIFY(s.idle());
+        Scenario reopened = s.window.document().scenario();
+        QCOMPARE(reopened.sweeps, saved.sweeps);
+        QCOMPARE(reopened.effects, saved.effects);
+        QCOMPARE(reopened.cut, saved.cut);
+        QCOMPARE(reopened.tissues, saved.tissues);
+        QCOMPARE(s.window.session().current()->cuts, 1);
+        QVERIFY(s.window.document().recentFiles().contains(QFileInfo(path).absoluteFilePath()));
+    }
+
+    void corruptFileGivesAMessage_data() {
+        QTest::addColumn<QByteArray>("content");
+        QTest::addColumn<QString>("name");
+        QTest::newRow("not json") << QByteArray("{\"format\": \"resect-scenario\", \"vers") << "broken.json";
+        QTest::newRow("wrong types") << QByteArray("{\"format\": \"resect-scenario\", \"version\": 1, \"tissues\": 3}")
+                                     << "types.json";
+        QTest::newRow("binary mesh") << QByteArray("\x00\x01\x02garbage", 10) << "mesh.vtu";
+        QTest::newRow("bad surface") << QByteArray("solid x\nfacet normal nan nan nan\nendsolid\n") << "bad.stl";
+    }
+    void corruptFileGivesAMessage() {
+        QFETCH(QByteArray, content);
+        QFETCH(QString, name);
+        Studio s;
+        QVERIFY(s.load());
+        const int tets = s.tets();
+        const QString path = m_dir.filePath(name);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(content);
+        f.close();
+        QSignalSpy errors(&s.window, &MainWindow::errorReported);
+        s.window.openFile(path);
+        QVERIFY(s.idle());
+        QTRY_VERIFY_WITH_TIMEOUT(errors.count() >= 1, kWaitMs);
+        const QString message = errors.first().first().toString();
+        QVERIFY2(!message.isEmpty(), "empty message");
+        // A bad scenario leaves the open document as it was.
+        if (name.endsWith(QLatin1String(".json")))
+            QCOMPARE(s.tets(), tets);
+        QFile again(path);
+        QVERIFY(again.open(QIODevice::ReadOnly));
+        QCOMPARE(again.readAll(), content); // the input is untouched
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    void simulationStepsAndEffectsToggle() {
+        Studio s;
+        QVERIFY(s.load(Sample::Myoma));
+        SimulationPanel* panel = s.window.simulationPanel();
+        QCheckBox* gravity = panel->effectBox("gravity");
+        QVERIFY(gravity && !gravity->isChecked());
+        gravity->click(); // the dock is tabbed behind the cut panel: not clickable with the mouse
+        QVERIFY(s.window.document().isEffectEnabled(QStringLiteral("gravity")));
+        QVERIFY(s.window.simulation().isReady());
+        QVERIFY(s.window.simulation().effectNames().size() == 2);
+
+        auto* step = panel->findChild<QPushButton*>(QStringLiteral("simStep"));
+        QVERIFY(step);
+        step->click();
+        step->click();
+        QCOMPARE(s.window.simulation().steps(), 2LL);
+        QVERIFY(s.window.simulation().time() > 0);
+        // Falling under gravity: a node moved downwards from its rest position.
+        const TetMesh& mesh = s.window.simulation().mesh();
+        double dz = 0;
+        for (int n = 0; n < mesh.nodeCount(); ++n)
+            dz = std::min(dz, mesh.pos(n).z() - mesh.ref(n).z());
+        QVERIFY(dz < 0);
+
+        auto* play = panel->findChild<QPushButton*>(QStringLiteral("simPlay"));
+        play->click();
+        QVERIFY(s.window.simulation().isPlaying());
+        QTRY_VERIFY_WITH_TIMEOUT(s.window.simulation().steps() > 10, 30'000);
+        play->click();
+        QVERIFY(!s.window.simulation().isPlaying());
+
+        // Undoing the effect edit rebuilds the simulation without gravity, at time 0.
+        s.action("undo")->trigger();
+        QVERIFY(!s.window.document().isEffectEnabled(QStringLiteral("gravity")));
+        QVERIFY(!gravity->isChecked());
+        QCOMPARE(s.window.simulation().steps(), 0LL);
+        QCOMPARE(s.window.simulation().effectNames().size(), std::size_t(1));
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    void unsavedChangesAreAskedAbout() {
+        Studio s;
+        QVERIFY(s.load());
+        s.window.document().setD(0.3);
+        s.window.setUnsavedChangesAnswer(QMessageBox::Cancel);
+        QVERIFY(!s.window.close());
+        QVERIFY(s.window.isVisible());
+        // Opening another document is refused as well: the edit is still there.
+        s.window.openSample(Sample::Myoma);
+        QCOMPARE(s.window.document().scenario().cut.d, 0.3);
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+        QVERIFY(s.window.close());
+    }
+};
+
+QTEST_MAIN(TestStudioMainWindow)
+#include "test_studio_main_window.moc"

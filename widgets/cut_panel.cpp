@@ -1,0 +1,250 @@
+#include "widgets/cut_panel.h"
+
+#include "widgets/scenario_document.h"
+#include "widgets/tissue_session.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+namespace resect {
+
+namespace {
+
+QDoubleSpinBox* numberBox(const QString& name, double min, double max, double step, int decimals) {
+    auto* box = new QDoubleSpinBox;
+    box->setObjectName(name);
+    box->setRange(min, max);
+    box->setSingleStep(step);
+    box->setDecimals(decimals);
+    box->setKeyboardTracking(false);
+    return box;
+}
+
+QString number(double v, int precision = 3) { return QLocale().toString(v, 'g', precision); }
+
+QString beforeAfter(const QString& before, const QString& after) {
+    return CutPanel::tr("%1 → %2").arg(before, after);
+}
+
+} // namespace
+
+CutPanel::CutPanel(ScenarioDocument& document, TissueSession& session, QWidget* parent)
+    : QWidget(parent), m_document(document), m_session(session) {
+    setObjectName(QStringLiteral("cutPanel"));
+    auto* layout = new QVBoxLayout(this);
+
+    auto* settings = new QGroupBox(tr("Method"), this);
+    auto* form = new QFormLayout(settings);
+    m_method = new QComboBox;
+    m_method->setObjectName(QStringLiteral("method"));
+    m_method->addItem(tr("Hybrid"), int(CutMethod::Hybrid));
+    m_method->addItem(tr("Subdivision"), int(CutMethod::Subdivision));
+    form->addRow(tr("Cutting method"), m_method);
+    m_triangulation = new QComboBox;
+    m_triangulation->setObjectName(QStringLiteral("triangulation"));
+    m_triangulation->addItem(tr("Enhanced (symmetric)"), int(FaceTriangulation::Enhanced));
+    m_triangulation->addItem(tr("Standard"), int(FaceTriangulation::Standard));
+    form->addRow(tr("Face triangulation"), m_triangulation);
+    m_d = numberBox(QStringLiteral("d"), 0.0, 0.5, 0.01, 3);
+    m_d->setToolTip(tr("Cut-node threshold d as a fraction of the mean edge length (the paper: 0.2)"));
+    form->addRow(tr("Threshold d"), m_d);
+    m_snap = new QCheckBox(tr("Snap cut nodes onto the sweep"));
+    m_snap->setObjectName(QStringLiteral("snap"));
+    form->addRow(QString(), m_snap);
+    m_relaxSteps = new QSpinBox;
+    m_relaxSteps->setObjectName(QStringLiteral("relaxSteps"));
+    m_relaxSteps->setRange(0, 10000);
+    m_relaxSteps->setKeyboardTracking(false);
+    form->addRow(tr("Relaxation steps"), m_relaxSteps);
+    m_wSpring = numberBox(QStringLiteral("wSpring"), 0.0, 1e6, 0.1, 3);
+    form->addRow(tr("Spring weight"), m_wSpring);
+    m_wParticle = numberBox(QStringLiteral("wParticle"), 0.0, 1e6, 0.05, 3);
+    form->addRow(tr("Particle weight"), m_wParticle);
+    m_relaxDamping = numberBox(QStringLiteral("relaxDamping"), 0.001, 1e6, 1.0, 3);
+    form->addRow(tr("Relaxation damping"), m_relaxDamping);
+    m_rings = new QSpinBox;
+    m_rings->setObjectName(QStringLiteral("rings"));
+    m_rings->setRange(1, 10);
+    form->addRow(tr("Relaxation rings"), m_rings);
+    layout->addWidget(settings);
+
+    auto* preview = new QGroupBox(tr("Preview"), this);
+    auto* previewForm = new QFormLayout(preview);
+    m_previewStatus = new QLabel;
+    m_previewStatus->setObjectName(QStringLiteral("previewStatus"));
+    m_previewStatus->setWordWrap(true);
+    previewForm->addRow(m_previewStatus);
+    addValue(previewForm, QStringLiteral("tets"), tr("Tets"));
+    addValue(previewForm, QStringLiteral("added_tets"), tr("Added tets"));
+    addValue(previewForm, QStringLiteral("cut_edges"), tr("Cut edges"));
+    addValue(previewForm, QStringLiteral("cut_nodes"), tr("Cut nodes"));
+    addValue(previewForm, QStringLiteral("snapped_nodes"), tr("Snapped nodes"));
+    addValue(previewForm, QStringLiteral("decomposed_tets"), tr("Decomposed tets"));
+    addValue(previewForm, QStringLiteral("separated_tets"), tr("Separated tets"));
+    addValue(previewForm, QStringLiteral("pieces"), tr("Pieces"));
+    addValue(previewForm, QStringLiteral("min_radius_ratio"), tr("Min radius ratio"));
+    addValue(previewForm, QStringLiteral("stable_dt"), tr("Stable time step (s)"));
+    addValue(previewForm, QStringLiteral("stage_ms"), tr("Intersect / select / decompose (ms)"));
+    addValue(previewForm, QStringLiteral("relax_ms"), tr("Snap / relax / update (ms)"));
+    addValue(previewForm, QStringLiteral("surface_ms"), tr("Surface cut (ms)"));
+    addValue(previewForm, QStringLiteral("total_ms"), tr("Total (ms)"));
+    auto* buttons = new QHBoxLayout;
+    m_apply = new QPushButton(tr("&Apply cut"));
+    m_apply->setObjectName(QStringLiteral("applyCut"));
+    m_discard = new QPushButton(tr("&Discard"));
+    m_discard->setObjectName(QStringLiteral("discardCut"));
+    buttons->addWidget(m_apply);
+    buttons->addWidget(m_discard);
+    previewForm->addRow(buttons);
+    layout->addWidget(preview);
+    layout->addStretch(1);
+
+    // Controls -> document (undoable edits).
+    connect(m_method, &QComboBox::currentIndexChanged, this, [this] {
+        if (!m_syncing)
+            m_document.setMethod(static_cast<CutMethod>(m_method->currentData().toInt()));
+    });
+    connect(m_triangulation, &QComboBox::currentIndexChanged, this, [this] {
+        if (!m_syncing)
+            m_document.setTriangulation(static_cast<FaceTriangulation>(m_triangulation->currentData().toInt()));
+    });
+    connect(m_d, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        if (!m_syncing)
+            m_document.setD(v);
+    });
+    connect(m_snap, &QCheckBox::toggled, this, [this](bool on) {
+        if (!m_syncing)
+            m_document.setSnap(on);
+    });
+    connect(m_relaxSteps, &QSpinBox::valueChanged, this, [this](int v) {
+        if (!m_syncing)
+            m_document.setRelaxSteps(v);
+    });
+    connect(m_wSpring, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        if (!m_syncing)
+            m_document.setWSpring(v);
+    });
+    connect(m_wParticle, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        if (!m_syncing)
+            m_document.setWParticle(v);
+    });
+    connect(m_relaxDamping, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        if (!m_syncing)
+            m_document.setRelaxDamping(v);
+    });
+    connect(m_rings, &QSpinBox::valueChanged, this, [this](int v) {
+        if (!m_syncing)
+            m_document.setRings(v);
+    });
+    connect(m_apply, &QPushButton::clicked, this, &CutPanel::apply);
+    connect(m_discard, &QPushButton::clicked, &m_session, &TissueSession::discardPending);
+
+    // Document and session -> panel.
+    connect(&m_document, &ScenarioDocument::cutSettingsChanged, this, &CutPanel::syncFromDocument);
+    connect(&m_document, &ScenarioDocument::documentReset, this, &CutPanel::syncFromDocument);
+    connect(&m_session, &TissueSession::previewChanged, this, &CutPanel::updatePreview);
+    connect(&m_session, &TissueSession::currentChanged, this, &CutPanel::updatePreview);
+    connect(&m_session, &TissueSession::busyChanged, this, &CutPanel::updatePreview);
+    syncFromDocument();
+    updatePreview();
+}
+
+QLabel* CutPanel::addValue(QFormLayout* form, const QString& key, const QString& label) {
+    auto* value = new QLabel;
+    value->setObjectName(QStringLiteral("preview_") + key);
+    value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    form->addRow(label, value);
+    m_values.emplace_back(key, value);
+    return value;
+}
+
+QString CutPanel::previewValue(const QString& key) const {
+    for (const auto& [k, label] : m_values)
+        if (k == key)
+            return label->text();
+    return {};
+}
+
+void CutPanel::syncFromDocument() {
+    const CutSettings& s = m_document.scenario().cut;
+    m_syncing = true;
+    m_method->setCurrentIndex(m_method->findData(int(s.method)));
+    m_triangulation->setCurrentIndex(m_triangulation->findData(int(s.triangulation)));
+    m_triangulation->setEnabled(s.method == CutMethod::Hybrid);
+    m_d->setValue(s.d);
+    m_d->setEnabled(s.method == CutMethod::Hybrid);
+    m_snap->setChecked(s.snap);
+    m_relaxSteps->setValue(s.relaxSteps);
+    m_wSpring->setValue(s.wSpring);
+    m_wParticle->setValue(s.wParticle);
+    m_relaxDamping->setValue(s.damping);
+    m_rings->setValue(s.rings);
+    m_syncing = false;
+}
+
+void CutPanel::updatePreview() {
+    const auto current = m_session.current();
+    const auto preview = m_session.preview();
+    const bool pending = m_session.hasPending();
+    m_apply->setEnabled(pending);
+    m_discard->setEnabled(pending);
+    if (!pending)
+        m_previewStatus->setText(tr("No pending cut. Draw a sweep or record a stroke to preview a cut."));
+    else if (!m_session.previewError().isEmpty())
+        m_previewStatus->setText(tr("The cut fails: %1").arg(m_session.previewError()));
+    else if (!preview)
+        m_previewStatus->setText(tr("Computing the preview..."));
+    else
+        m_previewStatus->setText(tr("Preview of the pending cut (not applied yet)."));
+
+    if (!preview || !current || !pending) {
+        for (auto& [key, label] : m_values)
+            label->clear();
+        return;
+    }
+    const CutStats& c = preview->cutStats;
+    const auto set = [this](const QString& key, const QString& text) {
+        for (auto& [k, label] : m_values)
+            if (k == key)
+                label->setText(text);
+    };
+    set(QStringLiteral("tets"), beforeAfter(QString::number(current->mesh.tetCount()),
+                                            QString::number(preview->mesh.tetCount())));
+    set(QStringLiteral("added_tets"), QString::number(preview->mesh.tetCount() - current->mesh.tetCount()));
+    set(QStringLiteral("cut_edges"), QString::number(c.cutEdges));
+    set(QStringLiteral("cut_nodes"), QString::number(c.cutNodes));
+    set(QStringLiteral("snapped_nodes"),
+        tr("%1 (%2 refused)").arg(c.snappedNodes).arg(c.refusedSnaps));
+    set(QStringLiteral("decomposed_tets"), QString::number(c.decomposedTets));
+    set(QStringLiteral("separated_tets"), QString::number(c.separatedTets));
+    set(QStringLiteral("pieces"), beforeAfter(QString::number(current->pieces), QString::number(preview->pieces)));
+    set(QStringLiteral("min_radius_ratio"),
+        beforeAfter(number(current->quality.minRadiusRatio), number(preview->quality.minRadiusRatio)));
+    set(QStringLiteral("stable_dt"), beforeAfter(number(current->stableDt), number(preview->stableDt)));
+    set(QStringLiteral("stage_ms"), tr("%1 / %2 / %3")
+                                        .arg(number(c.timeMs.intersect, 2), number(c.timeMs.select, 2),
+                                             number(c.timeMs.decompose, 2)));
+    set(QStringLiteral("relax_ms"), tr("%1 / %2 / %3")
+                                        .arg(number(c.timeMs.snap, 2), number(c.timeMs.relax, 2),
+                                             number(c.timeMs.update, 2)));
+    set(QStringLiteral("surface_ms"), number(preview->surfaceCutMs, 2));
+    set(QStringLiteral("total_ms"), number(c.timeMs.total + preview->surfaceCutMs, 3));
+}
+
+void CutPanel::apply() {
+    QString error;
+    if (!m_session.applyPending(&error))
+        emit applyFailed(error);
+}
+
+} // namespace resect

@@ -1,0 +1,68 @@
+#pragma once
+// CutPanel: the cut method and its parameters (the document's cut settings: method, face
+// triangulation, the cut-node threshold d, snapping, relaxation weights, steps, damping and
+// rings) and the live preview of the pending cut: its counts, the quality and stable time
+// step before and after, and the time of each stage; Apply adds the cut to the document,
+// Discard drops it.
+//
+// Edits go through the ScenarioDocument (undoable; consecutive changes of one number merge
+// into one undo step); the panel follows the document on undo and redo. The preview comes
+// from the TissueSession, which recomputes it whenever a setting changes.
+
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QFormLayout;
+class QLabel;
+class QPushButton;
+class QSpinBox;
+
+namespace resect {
+
+class ScenarioDocument;
+class TissueSession;
+
+class CutPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    CutPanel(ScenarioDocument& document, TissueSession& session, QWidget* parent = nullptr);
+
+    /// The preview's figures as shown, by key ("tets", "added_tets", "cut_edges",
+    /// "cut_nodes", "snapped_nodes", "decomposed_tets", "separated_tets", "pieces",
+    /// "min_radius_ratio", "stable_dt", "total_ms"); empty when there is no preview.
+    QString previewValue(const QString& key) const;
+
+signals:
+    /// Apply failed (no pending cut, or an invalid one); `message` says why.
+    void applyFailed(const QString& message);
+
+private:
+    void syncFromDocument();
+    void updatePreview();
+    void apply();
+    QLabel* addValue(QFormLayout* form, const QString& key, const QString& label);
+
+    ScenarioDocument& m_document;
+    TissueSession& m_session;
+    bool m_syncing = false;
+
+    QComboBox* m_method = nullptr;
+    QComboBox* m_triangulation = nullptr;
+    QDoubleSpinBox* m_d = nullptr;
+    QCheckBox* m_snap = nullptr;
+    QSpinBox* m_relaxSteps = nullptr;
+    QDoubleSpinBox* m_wSpring = nullptr;
+    QDoubleSpinBox* m_wParticle = nullptr;
+    QDoubleSpinBox* m_relaxDamping = nullptr;
+    QSpinBox* m_rings = nullptr;
+
+    QLabel* m_previewStatus = nullptr;
+    QPushButton* m_apply = nullptr;
+    QPushButton* m_discard = nullptr;
+    std::vector<std::pair<QString, QLabel*>> m_values;
+};
+
+} // namespace resect

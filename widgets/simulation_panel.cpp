@@ -1,0 +1,145 @@
+#include "widgets/simulation_panel.h"
+
+#include "scenario/scenario_document.h"
+#include "widgets/scenario_document.h"
+#include "widgets/simulation_controller.h"
+
+#include <QCheckBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace resect {
+
+namespace {
+
+/// The effect names as the author reads them.
+QString effectTitle(const std::string& name) {
+    if (name == "deformation")
+        return SimulationPanel::tr("Deformation (mass-spring)");
+    if (name == "gravity")
+        return SimulationPanel::tr("Gravity");
+    if (name == "fixed")
+        return SimulationPanel::tr("Fixed regions");
+    if (name == "tool-contact")
+        return SimulationPanel::tr("Tool contact");
+    if (name == "damping")
+        return SimulationPanel::tr("Damping");
+    return QString::fromStdString(name);
+}
+
+QString number(double v, int precision = 3) { return QLocale().toString(v, 'g', precision); }
+
+} // namespace
+
+SimulationPanel::SimulationPanel(ScenarioDocument& document, SimulationController& controller, QWidget* parent)
+    : QWidget(parent), m_document(document), m_controller(controller) {
+    setObjectName(QStringLiteral("simulationPanel"));
+    auto* layout = new QVBoxLayout(this);
+
+    auto* buttons = new QHBoxLayout;
+    m_play = new QPushButton(tr("Play"));
+    m_play->setObjectName(QStringLiteral("simPlay"));
+    m_step = new QPushButton(tr("Step"));
+    m_step->setObjectName(QStringLiteral("simStep"));
+    m_reset = new QPushButton(tr("Reset"));
+    m_reset->setObjectName(QStringLiteral("simReset"));
+    buttons->addWidget(m_play);
+    buttons->addWidget(m_step);
+    buttons->addWidget(m_reset);
+    layout->addLayout(buttons);
+
+    auto* effects = new QGroupBox(tr("Effects in the scenario"), this);
+    auto* effectsLayout = new QVBoxLayout(effects);
+    for (const std::string& name : knownEffectNames()) {
+        auto* box = new QCheckBox(effectTitle(name));
+        box->setObjectName(QStringLiteral("effect_") + QString::fromStdString(name));
+        effectsLayout->addWidget(box);
+        m_effects[name] = box;
+        connect(box, &QCheckBox::toggled, this, [this, name](bool on) {
+            if (!m_syncing)
+                m_document.setEffectEnabled(QString::fromStdString(name), on);
+        });
+    }
+    layout->addWidget(effects);
+
+    auto* figures = new QGroupBox(tr("Cost"), this);
+    auto* form = new QFormLayout(figures);
+    m_time = new QLabel;
+    m_time->setObjectName(QStringLiteral("simTime"));
+    form->addRow(tr("Simulated time"), m_time);
+    m_dt = new QLabel;
+    m_dt->setObjectName(QStringLiteral("simDt"));
+    form->addRow(tr("Time step"), m_dt);
+    m_cost = new QLabel;
+    m_cost->setObjectName(QStringLiteral("simCost"));
+    m_cost->setWordWrap(true);
+    form->addRow(tr("Per step"), m_cost);
+    layout->addWidget(figures);
+    m_status = new QLabel;
+    m_status->setObjectName(QStringLiteral("simStatus"));
+    m_status->setWordWrap(true);
+    layout->addWidget(m_status);
+    layout->addStretch(1);
+
+    connect(m_play, &QPushButton::clicked, this, [this] {
+        if (m_controller.isPlaying())
+            m_controller.pause();
+        else
+            m_controller.play();
+    });
+    connect(m_step, &QPushButton::clicked, &m_controller, &SimulationController::step);
+    connect(m_reset, &QPushButton::clicked, &m_controller, &SimulationController::reset);
+    connect(&m_controller, &SimulationController::playingChanged, this, &SimulationPanel::updateState);
+    connect(&m_controller, &SimulationController::resetDone, this, &SimulationPanel::updateState);
+    connect(&m_controller, &SimulationController::stepped, this, &SimulationPanel::updateFigures);
+    connect(&m_controller, &SimulationController::failed, this, &SimulationPanel::updateState);
+    connect(&m_document, &ScenarioDocument::effectsChanged, this, &SimulationPanel::syncEffects);
+    connect(&m_document, &ScenarioDocument::documentReset, this, &SimulationPanel::syncEffects);
+    syncEffects();
+    updateState();
+}
+
+QCheckBox* SimulationPanel::effectBox(const std::string& name) const {
+    const auto it = m_effects.find(name);
+    return it == m_effects.end() ? nullptr : it->second;
+}
+
+void SimulationPanel::syncEffects() {
+    m_syncing = true;
+    for (auto& [name, box] : m_effects)
+        box->setChecked(m_document.isEffectEnabled(QString::fromStdString(name)));
+    m_syncing = false;
+}
+
+void SimulationPanel::updateState() {
+    const bool ready = m_controller.isReady();
+    m_play->setEnabled(ready);
+    m_step->setEnabled(ready && !m_controller.isPlaying());
+    m_reset->setEnabled(ready || !m_controller.error().isEmpty());
+    m_play->setText(m_controller.isPlaying() ? tr("Pause") : tr("Play"));
+    if (!m_controller.error().isEmpty())
+        m_status->setText(m_controller.error());
+    else if (!ready)
+        m_status->setText(tr("No tissue to simulate."));
+    else
+        m_status->setText(m_controller.isPlaying() ? tr("Running.") : tr("Paused."));
+    updateFigures();
+}
+
+void SimulationPanel::updateFigures() {
+    m_time->setText(tr("%1 s (%2 steps)").arg(number(m_controller.time(), 4)).arg(m_controller.steps()));
+    m_dt->setText(tr("%1 s (stable: %2 s)").arg(number(m_controller.timeStep()), number(m_controller.stableTimeStep())));
+    QStringList parts;
+    for (const auto& [name, ms] : m_controller.effectMsPerStep())
+        parts << tr("%1: %2 ms").arg(QString::fromStdString(name), number(ms, 2));
+    if (m_controller.msPerSimulatedSecond() > 0)
+        parts << tr("%1 ms per simulated second").arg(number(m_controller.msPerSimulatedSecond()));
+    m_cost->setText(parts.join(QLatin1Char('\n')));
+}
+
+} // namespace resect
