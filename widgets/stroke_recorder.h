@@ -1,0 +1,145 @@
+#pragma once
+// StrokeRecorder: records a tool stroke (scenario_document.h, Stroke) by dragging the loop
+// electrode across a VtkViewport with the mouse.
+//
+// While armed (setRecording(true)), a left-button drag records:
+//  - Depth: at the press, the depth reference is the point where the press ray meets the
+//    pick surface (setPickSurface: the tissue) if it does, else the camera's focal point.
+//  - Position: every mouse move (and the release) samples the point under the cursor on the
+//    view plane through that reference (pixelOnViewPlane), the press giving the first pose.
+//    A sample closer than minSpacingPixels() (viewport pixels) to the last sampled cursor
+//    position is skipped, as is one whose time stamp does not increase.
+//  - Orientation: one fixed orientation for the whole stroke, chosen at the first sampled
+//    movement (strokeOrientation): the loop's plane perpendicular to the drag direction
+//    (the loop cuts like a resectoscope's electrode pulled through tissue), the loop's
+//    chord across the drag in the view plane, and its bulge pointing away from the viewer.
+//  - Time: t = seconds since the press, from the clock (setClock; by default a
+//    QElapsedTimer), so the first pose has t = 0.
+// The tool is shown at the current pose (ToolActor) and the sweep so far (SweepActor)
+// during the drag. The release finishes: with >= 2 poses (distinct by construction) whose
+// sweep the tool can make (strokeSweep succeeds; not checked without a tool curve) it emits
+// strokeRecorded() and disarms (recordingChanged(false)); otherwise it emits
+// recordingFailed() with the reason, clears the preview and stays armed.
+// While armed, Shift/Ctrl/Alt + left, the middle and the right button stay camera
+// navigation; disarmed, the tool leaves every event to the viewport.
+
+#include "core/mesh/triangle_surface.h"
+#include "scenario/scenario_document.h"
+#include "widgets/sweep_actor.h"
+#include "widgets/tool_actor.h"
+#include "widgets/viewport_tool.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QPointF>
+#include <QPointer>
+#include <QString>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace resect {
+
+class VtkViewport;
+
+/// The orientation (quaternion w, x, y, z, unit length) that puts the tool's loop plane
+/// perpendicular to `dragDirection`, for a camera looking along `viewDirection` (world,
+/// any lengths).
+/// Tool frame: the principal axes of the tool curve's points (covariance eigenvectors):
+/// a1 the largest spread, signed from the first towards the last point (the chord), a3 the
+/// second, signed from the chord's midpoint towards the centroid (the bulge), and the loop
+/// normal a2 = a3 x a1; a curve of fewer than two distinct points uses a1, a2, a3 = x, y, z.
+/// World: d the drag direction made perpendicular to v, v the view direction, e = d x v.
+/// The rotation maps a1 -> e, a2 -> d, a3 -> v: the chord lies across the drag in the view
+/// plane, the loop's bulge points away from the viewer. Returns the identity (1, 0, 0, 0)
+/// when d or v is zero, non-finite, or d is parallel to v.
+Eigen::Vector4d strokeOrientation(const ToolSpec& tool, const Vec3& dragDirection,
+                                  const Vec3& viewDirection);
+
+class StrokeRecorder : public QObject, public ViewportTool {
+    Q_OBJECT
+
+public:
+    /// The recorder draws into `viewport` (its props are added now, removed when it is
+    /// destroyed); it still has to be made the viewport's tool with setTool().
+    explicit StrokeRecorder(VtkViewport* viewport, QObject* parent = nullptr);
+    ~StrokeRecorder() override;
+
+    /// The tool that is moved (its curve is shown and swept); copied.
+    void setToolSpec(const ToolSpec& tool);
+    const ToolSpec& toolSpec() const { return m_tool; }
+    /// Name given to recorded strokes.
+    void setStrokeName(const std::string& name) { m_strokeName = name; }
+    const std::string& strokeName() const { return m_strokeName; }
+
+    /// Surface whose hit under the press sets the stroke's depth (the tissue); copied.
+    void setPickSurface(const TriangleSurface& surface);
+    void clearPickSurface();
+
+    /// Time source in seconds (any origin; only differences are used). Null restores the
+    /// default, a QElapsedTimer.
+    void setClock(std::function<double()> clock);
+    void setMinSpacingPixels(double pixels);
+    double minSpacingPixels() const { return m_minSpacing; }
+
+    /// Arms or disarms the recorder; disarming during a drag abandons it (no signal).
+    void setRecording(bool armed);
+    bool isRecording() const { return m_armed; }
+    /// True between a press and its release while armed.
+    bool isDragging() const { return m_dragging; }
+
+    /// The poses of the stroke being recorded, or of the last one recorded.
+    const std::vector<ToolPose>& poses() const { return m_poses; }
+    /// Hides the tool and the preview sweep and forgets the poses (abandons a drag).
+    void clear();
+
+    ToolActor& toolActor() { return m_toolActor; }
+    SweepActor& sweepActor() { return m_sweepActor; }
+
+    static constexpr double kDefaultMinSpacingPixels = 4.0;
+
+    // --- ViewportTool ---
+    bool mousePress(VtkViewport& viewport, QMouseEvent* event) override;
+    bool mouseMove(VtkViewport& viewport, QMouseEvent* event) override;
+    bool mouseRelease(VtkViewport& viewport, QMouseEvent* event) override;
+    void deactivated(VtkViewport& viewport) override;
+
+signals:
+    void recordingChanged(bool armed);
+    /// A pose was added to the stroke being recorded (count = poses().size()).
+    void poseSampled(int count);
+    void strokeRecorded(const resect::Stroke& stroke);
+    void recordingFailed(const QString& reason);
+
+private:
+    double now() const;
+    /// Samples the cursor at `pixel`; returns true if a pose was added.
+    bool sample(VtkViewport& viewport, const QPointF& pixel);
+    void updateDisplay();
+    /// The reason the poses are not a usable stroke (empty when they are).
+    QString strokeProblem(const Stroke& stroke) const;
+
+    QPointer<VtkViewport> m_viewport;
+    ToolSpec m_tool;
+    std::string m_strokeName;
+    std::optional<TriangleSurface> m_pickSurface;
+    std::function<double()> m_clock;
+    QElapsedTimer m_timer;
+    double m_minSpacing = kDefaultMinSpacingPixels;
+
+    bool m_armed = false;
+    bool m_dragging = false;
+    bool m_orientationFixed = false;
+    double m_t0 = 0;
+    Vec3 m_depth = Vec3::Zero();     ///< the depth reference of the drag
+    Vec3 m_view = Vec3::UnitZ();     ///< view direction at the press
+    QPointF m_lastPixel;             ///< cursor position of the last pose
+    std::vector<ToolPose> m_poses;
+
+    ToolActor m_toolActor;
+    SweepActor m_sweepActor;
+};
+
+} // namespace resect
