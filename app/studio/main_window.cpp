@@ -1,9 +1,12 @@
 #include "main_window.h"
 
+#include "widgets/authoring_panel.h"
 #include "widgets/cut_panel.h"
 #include "widgets/scenario_document.h"
 #include "widgets/simulation_controller.h"
 #include "widgets/simulation_panel.h"
+#include "widgets/surface_pick.h"
+#include "widgets/sweep_edit_tool.h"
 #include "widgets/tissue_session.h"
 #include "widgets/vtk_viewport.h"
 
@@ -58,6 +61,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     m_cutPanel = new CutPanel(*m_document, *m_session);
     m_simulationPanel = new SimulationPanel(*m_document, *m_simulation);
+    m_authoringPanel = new AuthoringPanel(m_viewport);
     createActions();
     createDocks();
 
@@ -84,6 +88,22 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_simulation, &SimulationController::resetDone, this, [this] { refreshView(false); });
     connect(m_simulation, &SimulationController::failed, this, [this](const QString& message) {
         statusBar()->showMessage(message, 10000);
+    });
+    // Authoring: what is drawn or recorded becomes the pending cut, previewed live.
+    connect(m_authoringPanel, &AuthoringPanel::sweepFinished, m_session, &TissueSession::setPendingSweep);
+    connect(m_authoringPanel, &AuthoringPanel::strokeRecorded, m_session, &TissueSession::setPendingStroke);
+    connect(&m_authoringPanel->sweepEditor(), &SweepEditTool::sweepChanged, this, [this] {
+        if (const auto spec = m_authoringPanel->sweepEditor().sweepSpec())
+            m_session->setPendingSweep(*spec);
+    });
+    connect(m_document, &ScenarioDocument::documentReset, this,
+            [this] { m_authoringPanel->setToolSpec(m_document->scenario().tool); });
+    connect(m_session, &TissueSession::currentChanged, this, [this] {
+        // New sweep points and stroke depths are picked on the tissue's boundary.
+        if (const auto current = m_session->current())
+            m_authoringPanel->setPickSurface(pickSurfaceOf(current->mesh));
+        else
+            m_authoringPanel->clearPickSurface();
     });
     connect(m_cutPanel, &CutPanel::applyFailed, this,
             [this](const QString& message) { showError(tr("The cut was not applied."), message); });
@@ -192,6 +212,9 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::RightDockWidgetArea, simDock);
     tabifyDockWidget(cutDock, simDock);
     cutDock->raise();
+    QDockWidget* authorDock = makeDock(tr("Authoring"), QStringLiteral("authoringDock"), m_authoringPanel, this);
+    addDockWidget(Qt::LeftDockWidgetArea, authorDock);
+    m_viewMenu->addAction(authorDock->toggleViewAction());
     m_viewMenu->addAction(cutDock->toggleViewAction());
     m_viewMenu->addAction(simDock->toggleViewAction());
 }

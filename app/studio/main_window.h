@@ -21,6 +21,7 @@ class QProgressDialog;
 
 namespace resect {
 
+class AuthoringPanel;
 class CutPanel;
 class ScenarioDocument;
 class SimulationController;
@@ -53,6 +54,7 @@ public:
     SimulationController& simulation() { return *m_simulation; }
     CutPanel* cutPanel() const { return m_cutPanel; }
     SimulationPanel* simulationPanel() const { return m_simulationPanel; }
+    AuthoringPanel* authoringPanel() const { return m_authoringPanel; }
 
     /// Whether errors are shown in message boxes (default) or only signalled (tests, the
     /// command line's --screenshot).
@@ -100,6 +102,7 @@ private:
     VtkViewport* m_viewport = nullptr;
     CutPanel* m_cutPanel = nullptr;
     SimulationPanel* m_simulationPanel = nullptr;
+    AuthoringPanel* m_authoringPanel = nullptr;
     QLabel* m_statusLabel = nullptr;
     QProgressDialog* m_progress = nullptr;
     QMenu* m_recentMenu = nullptr;

@@ -4,7 +4,9 @@
 
 #include "main_window.h"
 
+#include "widgets/authoring_panel.h"
 #include "widgets/cut_panel.h"
+#include "widgets/stroke_recorder.h"
 #include "widgets/scenario_document.h"
 #include "widgets/simulation_controller.h"
 #include "widgets/simulation_panel.h"
@@ -12,6 +14,7 @@
 #include "widgets/vtk_viewport.h"
 
 #include <QAction>
+#include <vtkCamera.h>
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -140,6 +143,52 @@ private slots:
         redo->trigger();
         QVERIFY(s.idle());
         QCOMPARE(s.tets(), cut);
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    void recordAStrokeAndApplyIt() {
+        Studio s;
+        QVERIFY(s.load());
+        const int tets = s.tets();
+        AuthoringPanel* panel = s.window.authoringPanel();
+        QVERIFY(panel);
+        double now = 0;
+        panel->strokeRecorder().setClock([&now] { return now; });
+        auto* record = panel->findChild<QPushButton*>(QStringLiteral("recordStrokeButton"));
+        QVERIFY(record);
+        record->click();
+        QVERIFY(panel->strokeRecorder().isRecording());
+
+        // Drag the electrode across the middle of the view, left to right.
+        VtkViewport* view = s.window.viewport();
+        double before[3];
+        view->camera()->GetPosition(before);
+        const int y = view->height() / 2;
+        const int x0 = view->width() / 5, x1 = 4 * view->width() / 5;
+        QTest::mousePress(view, Qt::LeftButton, {}, QPoint(x0, y));
+        for (int i = 1; i <= 12; ++i) {
+            now += 0.05;
+            QTest::mouseMove(view, QPoint(x0 + (x1 - x0) * i / 12, y + i));
+        }
+        QTest::mouseRelease(view, Qt::LeftButton, {}, QPoint(x1, y + 12));
+        double after[3];
+        view->camera()->GetPosition(after);
+        QCOMPARE(after[0], before[0]); // recording does not move the camera
+        QVERIFY(!panel->strokeRecorder().isRecording());
+
+        // The stroke is the pending cut: its sweep is previewed, then applied.
+        QVERIFY(s.window.session().hasPending());
+        QVERIFY(s.idle());
+        QVERIFY2(s.window.session().previewError().isEmpty(), qPrintable(s.window.session().previewError()));
+        QVERIFY(s.window.session().preview());
+        const int previewTets = s.window.session().preview()->mesh.tetCount();
+        QVERIFY(previewTets > tets);
+        QCOMPARE(panel->lastStroke().poses.size(), std::size_t(13));
+        QVERIFY(panel->lastStroke().poses.back().t > panel->lastStroke().poses.front().t);
+        QTest::mouseClick(s.window.cutPanel()->findChild<QPushButton*>(QStringLiteral("applyCut")), Qt::LeftButton);
+        QVERIFY(s.idle());
+        QCOMPARE(int(s.window.document().scenario().strokes.size()), 1);
+        QCOMPARE(s.tets(), previewTets);
         s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
     }
 
