@@ -26,9 +26,9 @@ inline constexpr double kRegularDihedralDeg = 70.528779365509308;
 
 /// What a quality overlay shows per tet (reference configuration, core/mesh/quality.h).
 enum class QualityMeasure {
-    None,         ///< no overlay: uniform tissue colour
-    RadiusRatio,  ///< 3 r_in / R_circ, in [0, 1] for valid tets
-    MinDihedral,  ///< smallest of the six dihedral angles, degrees
+    None,        ///< no overlay: uniform tissue colour
+    RadiusRatio, ///< 3 r_in / R_circ, in [0, 1] for valid tets
+    MinDihedral, ///< smallest of the six dihedral angles, degrees
 };
 
 /// The measure's value for one tet (radius ratio for None, so that filters and histograms

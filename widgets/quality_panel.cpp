@@ -134,8 +134,7 @@ QualityPanel::QualityPanel(QWidget* parent) : QWidget(parent) {
     connect(m_rangeMax, &QDoubleSpinBox::valueChanged, this, &QualityPanel::onRangeChanged);
     connect(m_rangeAuto, &QPushButton::clicked, this, &QualityPanel::onAutoRange);
     connect(m_filterEnabled, &QCheckBox::toggled, this, &QualityPanel::onFilterChanged);
-    connect(m_filterThreshold, &QDoubleSpinBox::valueChanged, this,
-            &QualityPanel::onFilterChanged);
+    connect(m_filterThreshold, &QDoubleSpinBox::valueChanged, this, &QualityPanel::onFilterChanged);
     connect(m_clipEnabled, &QCheckBox::toggled, this, &QualityPanel::applyClip);
     connect(m_clipAxis, &QComboBox::currentIndexChanged, this, &QualityPanel::applyClip);
     connect(m_clipPosition, &QSlider::valueChanged, this, &QualityPanel::applyClip);
@@ -305,7 +304,7 @@ void QualityPanel::applyClip() {
     const ClipAxis axis = clipAxis();
     Vec3 normal = Vec3::UnitX();
     if (axis == ClipAxis::View)
-        normal = -viewDirection(m_viewport->camera());  // towards the camera
+        normal = -viewDirection(m_viewport->camera()); // towards the camera
     else
         normal = Vec3::Unit(static_cast<int>(axis));
     // Extent of the bounding box along the normal; the plane moves from its far end (t = 0:

@@ -20,7 +20,8 @@ QString number(double v) {
 
 } // namespace
 
-QualitySummaryTable::QualitySummaryTable(QWidget* parent) : QTableWidget(RowCount, ColumnCount, parent) {
+QualitySummaryTable::QualitySummaryTable(QWidget* parent)
+    : QTableWidget(RowCount, ColumnCount, parent) {
     setObjectName(QStringLiteral("qualitySummaryTable"));
     setHorizontalHeaderLabels({tr("before"), tr("after")});
     setVerticalHeaderLabels({tr("Nodes"), tr("Edges"), tr("Tets"), tr("Min. radius ratio"),

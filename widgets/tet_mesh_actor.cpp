@@ -47,10 +47,8 @@ std::vector<Scheme> tetSchemesAfterCut(const CutChanges& changes, int tetCount,
 }
 
 TetMeshActor::TetMeshActor()
-    : m_boundary(vtkSmartPointer<vtkPolyData>::New()),
-      m_points(vtkSmartPointer<vtkPoints>::New()),
-      m_lut(makeQualityLookupTable()),
-      m_mapper(vtkSmartPointer<vtkPolyDataMapper>::New()),
+    : m_boundary(vtkSmartPointer<vtkPolyData>::New()), m_points(vtkSmartPointer<vtkPoints>::New()),
+      m_lut(makeQualityLookupTable()), m_mapper(vtkSmartPointer<vtkPolyDataMapper>::New()),
       m_actor(vtkSmartPointer<vtkActor>::New()) {
     m_points->SetDataTypeToDouble();
     m_mapper->SetInputData(m_boundary);
@@ -262,8 +260,7 @@ void TetMeshActor::rebuildCells() {
     for (std::size_t t = 0; t < m_tets.size(); ++t) {
         if (m_clipped[t])
             continue;
-        if (m_filterEnabled &&
-            !(qualityMeasureValue(fm, m_quality[t]) < m_filterThreshold))
+        if (m_filterEnabled && !(qualityMeasureValue(fm, m_quality[t]) < m_filterThreshold))
             continue;
         shown[t] = 1;
         m_displayed.push_back(static_cast<int>(t));

@@ -39,9 +39,9 @@ namespace resect {
 
 /// How the tets are drawn.
 enum class TetDisplayMode {
-    Surface,     ///< boundary of the displayed tets, element edges on top
-    Wireframe,   ///< every face of the displayed tets as lines
-    ShrunkTets,  ///< every displayed tet shrunk towards its centroid
+    Surface,    ///< boundary of the displayed tets, element edges on top
+    Wireframe,  ///< every face of the displayed tets as lines
+    ShrunkTets, ///< every displayed tet shrunk towards its centroid
 };
 
 /// Names of the cell arrays of TetMeshActor::boundary().
@@ -152,9 +152,9 @@ private:
     std::vector<MeshFace> m_faces;
     std::vector<TetQuality> m_quality;
     std::vector<Scheme> m_schemes;
-    std::vector<char> m_clipped;  ///< per tet: hidden by the clipping plane
+    std::vector<char> m_clipped; ///< per tet: hidden by the clipping plane
     std::vector<int> m_displayed;
-    bool m_pointsAreNodes = true;  ///< point i is node i (else four points per shown tet)
+    bool m_pointsAreNodes = true; ///< point i is node i (else four points per shown tet)
 
     TetDisplayMode m_mode = TetDisplayMode::Surface;
     QualityMeasure m_measure = QualityMeasure::RadiusRatio;

@@ -58,7 +58,7 @@ double rayTriangle(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c) 
     const double det = e1.dot(p);
     const double scale = e1.norm() * e2.norm();
     if (!(std::abs(det) > 1e-14 * scale))
-        return -1.0;  // parallel or degenerate
+        return -1.0; // parallel or degenerate
     const double inv = 1.0 / det;
     const Vec3 t = ray.origin - a;
     const double u = t.dot(p) * inv;

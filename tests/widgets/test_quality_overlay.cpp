@@ -78,8 +78,7 @@ std::set<int> displayedOwners(const TetMeshActor& actor) {
     return out;
 }
 
-template <class T>
-T* child(QWidget& parent, const char* name) {
+template <class T> T* child(QWidget& parent, const char* name) {
     T* w = parent.findChild<T*>(QString::fromLatin1(name));
     if (w == nullptr)
         qFatal("missing child widget %s", name);
@@ -118,6 +117,7 @@ private slots:
         VtkViewport viewport;
         viewport.setTetMesh(mesh);
         QualityPanel panel;
+        panel.show();
         panel.attach(&viewport);
         panel.meshChanged();
         TetMeshActor& actor = viewport.tetMeshActor();
@@ -135,16 +135,15 @@ private slots:
         auto* measure = child<QComboBox>(panel, "overlayMeasure");
         measure->setCurrentIndex(static_cast<int>(QualityMeasure::MinDihedral));
         QCOMPARE(actor.overlayMeasure(), QualityMeasure::MinDihedral);
-        QCOMPARE(QString::fromLatin1(mapper->GetArrayName()),
-                 QString::fromLatin1("min_dihedral"));
+        QCOMPARE(QString::fromLatin1(mapper->GetArrayName()), QString::fromLatin1("min_dihedral"));
         QCOMPARE(actor.colorRange().first, 0.0);
         QCOMPARE(actor.colorRange().second, kRegularDihedralDeg);
         QCOMPARE(mapper->GetScalarRange()[1], kRegularDihedralDeg);
         QCOMPARE(actor.lookupTable()->GetRange()[1], kRegularDihedralDeg);
         QCOMPARE(panel.legend().title(), qualityMeasureTitle(QualityMeasure::MinDihedral));
         // The spin box shows the range (to its one decimal).
-        QVERIFY(std::abs(child<QDoubleSpinBox>(panel, "rangeMax")->value() -
-                         kRegularDihedralDeg) < 0.051);
+        QVERIFY(std::abs(child<QDoubleSpinBox>(panel, "rangeMax")->value() - kRegularDihedralDeg) <
+                0.051);
 
         // "Auto" takes the data range.
         double lo = 1e9, hi = -1e9;
@@ -189,11 +188,12 @@ private slots:
         VtkViewport viewport;
         viewport.setTetMesh(mesh);
         QualityPanel panel;
+        panel.show();
         panel.attach(&viewport);
         TetMeshActor& actor = viewport.tetMeshActor();
         child<QComboBox>(panel, "overlayMeasure")->setCurrentIndex(measure);
         child<QDoubleSpinBox>(panel, "filterThreshold")->setValue(threshold);
-        QCOMPARE(int(actor.displayedTets().size()), mesh.tetCount());  // not enabled yet
+        QCOMPARE(int(actor.displayedTets().size()), mesh.tetCount()); // not enabled yet
         QTest::mouseClick(child<QCheckBox>(panel, "filterEnabled"), Qt::LeftButton);
         QVERIFY(actor.qualityFilterEnabled());
 
@@ -215,6 +215,7 @@ private slots:
         VtkViewport viewport;
         viewport.setTetMesh(mesh);
         QualityPanel panel;
+        panel.show();
         panel.attach(&viewport);
         TetMeshActor& actor = viewport.tetMeshActor();
         auto* mode = child<QComboBox>(panel, "displayMode");
@@ -230,7 +231,8 @@ private slots:
         // Every shrunk corner lies strictly between the centroid and the node.
         vtkPoints* points = actor.boundary()->GetPoints();
         const Tet& t0 = mesh.tet(0);
-        const Vec3 c = 0.25 * (mesh.pos(t0[0]) + mesh.pos(t0[1]) + mesh.pos(t0[2]) + mesh.pos(t0[3]));
+        const Vec3 c =
+            0.25 * (mesh.pos(t0[0]) + mesh.pos(t0[1]) + mesh.pos(t0[2]) + mesh.pos(t0[3]));
         Vec3 p;
         points->GetPoint(0, p.data());
         QVERIFY(((p - c) - actor.shrinkFactor() * (mesh.pos(t0[0]) - c)).norm() < 1e-12);
@@ -244,10 +246,11 @@ private slots:
         VtkViewport viewport;
         viewport.setTetMesh(mesh);
         QualityPanel panel;
+        panel.show();
         panel.attach(&viewport);
         TetMeshActor& actor = viewport.tetMeshActor();
         auto* slider = child<QSlider>(panel, "clipPosition");
-        child<QComboBox>(panel, "clipAxis")->setCurrentIndex(0);  // x
+        child<QComboBox>(panel, "clipAxis")->setCurrentIndex(0); // x
         slider->setValue(slider->maximum());
         QTest::mouseClick(child<QCheckBox>(panel, "clipEnabled"), Qt::LeftButton);
         QVERIFY(actor.clipEnabled());
@@ -293,6 +296,7 @@ private slots:
         viewport.resize(400, 300);
         viewport.setTetMesh(mesh);
         QualityPanel panel;
+        panel.show();
         panel.attach(&viewport);
         TetMeshActor& actor = viewport.tetMeshActor();
         child<QComboBox>(panel, "clipAxis")->setCurrentIndex(int(QualityPanel::ClipAxis::View));
@@ -330,7 +334,8 @@ private slots:
         QVERIFY(actor.updatePositions(mesh));
         QCOMPARE(actor.cellRebuilds(), rebuilds2);
         const Tet& t0 = mesh.tet(0);
-        const Vec3 c = 0.25 * (mesh.pos(t0[0]) + mesh.pos(t0[1]) + mesh.pos(t0[2]) + mesh.pos(t0[3]));
+        const Vec3 c =
+            0.25 * (mesh.pos(t0[0]) + mesh.pos(t0[1]) + mesh.pos(t0[2]) + mesh.pos(t0[3]));
         poly->GetPoints()->GetPoint(0, p.data());
         QVERIFY((p - (c + actor.shrinkFactor() * (mesh.pos(t0[0]) - c))).norm() < 1e-12);
 
@@ -345,6 +350,7 @@ private slots:
         const TetMesh before = makeBoxTetMesh(Vec3::Zero(), Vec3::Ones(), 3, 3, 3);
         const TetMesh after = distortedBox();
         QualityPanel panel;
+        panel.show();
         panel.resize(400, 600);
         panel.setBeforeMesh(before, 0.0);
         panel.setAfterMesh(after, 0.0);
@@ -387,6 +393,7 @@ private slots:
         const TetMesh before = makeBoxTetMesh(Vec3::Zero(), Vec3::Ones(), 3, 3, 3);
         const TetMesh after = distortedBox();
         QualityPanel panel;
+        panel.show();
         QualitySummaryTable* table = panel.summaryTable();
         using T = QualitySummaryTable;
         panel.setBeforeMesh(before, 1.5e-4);
@@ -430,8 +437,8 @@ private slots:
         changes.tetScheme = {{1, Scheme::A}, {3, Scheme::X}};
         const std::vector<Scheme> previous = {Scheme::B};
         const std::vector<Scheme> s = tetSchemesAfterCut(changes, 6, previous);
-        const std::vector<Scheme> expected = {Scheme::B,    Scheme::A, Scheme::None,
-                                              Scheme::X,    Scheme::A, Scheme::X};
+        const std::vector<Scheme> expected = {Scheme::B, Scheme::A, Scheme::None,
+                                              Scheme::X, Scheme::A, Scheme::X};
         QVERIFY(s == expected);
         TetMeshActor actor;
         actor.setTetSchemes(s);

@@ -60,8 +60,7 @@ std::vector<VisibleFace> visibleFaces(const TetMesh& mesh, const VtkViewport& vi
     return out;
 }
 
-template <class T>
-T* child(QWidget& parent, const char* name) {
+template <class T> T* child(QWidget& parent, const char* name) {
     T* w = parent.findChild<T*>(QString::fromLatin1(name));
     if (w == nullptr)
         qFatal("missing child widget %s", name);
@@ -91,7 +90,7 @@ private slots:
         const TetMesh mesh = makeBoxTetMesh(Vec3::Zero(), scale * Vec3(2, 1.5, 1), 4, 3, 2);
         VtkViewport viewport;
         viewport.resize(400, 300);
-        viewport.setTetMesh(mesh);  // frames the mesh (resetCamera)
+        viewport.setTetMesh(mesh); // frames the mesh (resetCamera)
         const std::vector<VisibleFace> faces = visibleFaces(mesh, viewport);
         QVERIFY(faces.size() >= 10);
         for (const VisibleFace& f : faces)
@@ -109,6 +108,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&viewport));
         viewport.setTetMesh(mesh);
         QualityPanel panel;
+        panel.show();
         panel.attach(&viewport);
         panel.setMeshProvider([&mesh] { return &mesh; });
         std::vector<Scheme> schemes(mesh.tetCount(), Scheme::None);
@@ -172,6 +172,7 @@ private slots:
         viewport.resize(400, 300);
         viewport.setTetMesh(mesh);
         QualityPanel panel;
+        panel.show();
         panel.attach(&viewport);
         const std::vector<VisibleFace> faces = visibleFaces(mesh, viewport);
         const VisibleFace& target = faces[faces.size() / 2];
