@@ -232,7 +232,7 @@ bool TetMeshActor::computeClipped(std::vector<char>& clipped) const {
         for (std::size_t t = 0; t < m_tets.size(); ++t) {
             bool allPositive = true;
             for (int n : m_tets[t])
-                allPositive = allPositive && (m_pos[n] - m_clipOrigin).dot(m_clipNormal) > 0.0;
+                allPositive = allPositive && (m_pos[n] - m_clipOrigin).dot(m_clipNormal) >= 0.0;
             next[t] = allPositive ? 1 : 0;
         }
     }

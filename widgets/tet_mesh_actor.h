@@ -101,8 +101,10 @@ public:
     /// overlay is None.
     QualityMeasure filterMeasure() const;
 
-    /// Hides every tet whose four current node positions p all lie on the positive side,
-    /// dot(p - origin, normal) > 0. A zero normal disables clipping.
+    /// Hides every tet whose four current node positions p all lie on the positive side of
+    /// the plane or on it, dot(p - origin, normal) >= 0 (so a plane through the mesh's
+    /// lowest point hides every tet, one through its highest none). A zero normal disables
+    /// clipping.
     void setClipPlane(bool enabled, const Vec3& origin, const Vec3& normal);
     bool clipEnabled() const { return m_clipEnabled; }
     Vec3 clipOrigin() const { return m_clipOrigin; }
