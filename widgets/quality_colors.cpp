@@ -32,7 +32,7 @@ QString qualityMeasureTitle(QualityMeasure measure) {
     case QualityMeasure::RadiusRatio:
         return QCoreApplication::translate("resect::QualityMeasure", "Radius ratio");
     case QualityMeasure::MinDihedral:
-        return QCoreApplication::translate("resect::QualityMeasure", "Min. dihedral angle (°)");
+        return QCoreApplication::translate("resect::QualityMeasure", "Min. dihedral (°)");
     }
     return {};
 }

@@ -37,7 +37,7 @@ double qualityMeasureValue(QualityMeasure measure, const TetQuality& quality);
 /// Default colour range of the measure: [0, 1] for the radius ratio, [0, 70.53] degrees for
 /// the minimum dihedral angle (None: the radius ratio's).
 std::pair<double, double> defaultQualityRange(QualityMeasure measure);
-/// Translated, user-visible name of the measure ("Radius ratio", "Min. dihedral angle (°)",
+/// Translated, user-visible name of the measure ("Radius ratio", "Min. dihedral (°)",
 /// "None").
 QString qualityMeasureTitle(QualityMeasure measure);
 

@@ -17,11 +17,15 @@ QualityLegend::QualityLegend() : m_bar(vtkSmartPointer<vtkScalarBarActor>::New()
     m_bar->SetMaximumHeightInPixels(320);
     // Lower right corner, in normalised viewport coordinates.
     m_bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-    m_bar->GetPositionCoordinate()->SetValue(0.86, 0.08);
+    m_bar->GetPositionCoordinate()->SetValue(0.8, 0.08);
     m_bar->SetWidth(0.12);
     m_bar->SetHeight(0.5);
-    m_bar->GetTitleTextProperty()->SetFontSize(12);
-    m_bar->GetLabelTextProperty()->SetFontSize(11);
+    // Fixed font sizes: by default the bar scales its text to its width, which leaves the
+    // title of the narrow vertical bar unreadably small.
+    m_bar->UnconstrainedFontSizeOn();
+    m_bar->GetTitleTextProperty()->SetFontSize(13);
+    m_bar->GetTitleTextProperty()->SetJustificationToRight();
+    m_bar->GetLabelTextProperty()->SetFontSize(12);
     m_bar->SetVisibility(false);
 }
 
