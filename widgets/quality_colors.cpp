@@ -1,8 +1,41 @@
 #include "widgets/quality_colors.h"
 
+#include <QCoreApplication>
+
 #include <vtkLookupTable.h>
 
+#include <numbers>
+
 namespace resect {
+
+double qualityMeasureValue(QualityMeasure measure, const TetQuality& quality) {
+    switch (measure) {
+    case QualityMeasure::MinDihedral:
+        return quality.minDihedral * 180.0 / std::numbers::pi;
+    case QualityMeasure::None:
+    case QualityMeasure::RadiusRatio:
+        break;
+    }
+    return quality.radiusRatio;
+}
+
+std::pair<double, double> defaultQualityRange(QualityMeasure measure) {
+    if (measure == QualityMeasure::MinDihedral)
+        return {0.0, kRegularDihedralDeg};
+    return {kQualityScaleMin, kQualityScaleMax};
+}
+
+QString qualityMeasureTitle(QualityMeasure measure) {
+    switch (measure) {
+    case QualityMeasure::None:
+        return QCoreApplication::translate("resect::QualityMeasure", "None");
+    case QualityMeasure::RadiusRatio:
+        return QCoreApplication::translate("resect::QualityMeasure", "Radius ratio");
+    case QualityMeasure::MinDihedral:
+        return QCoreApplication::translate("resect::QualityMeasure", "Min. dihedral (°)");
+    }
+    return {};
+}
 
 vtkSmartPointer<vtkLookupTable> makeQualityLookupTable() {
     auto table = vtkSmartPointer<vtkLookupTable>::New();

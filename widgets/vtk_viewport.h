@@ -52,6 +52,7 @@ public:
 
     /// The rendering adapters, for display options (overlays, clipping, ...).
     TetMeshActor& tetMeshActor() { return m_tetMesh; }
+    const TetMeshActor& tetMeshActor() const { return m_tetMesh; }
     SurfaceActor& surfaceActor() { return m_surface; }
 
     /// Adds a prop (sweep surface, tool, handles, legend, ...) to the scene; not owned, the
