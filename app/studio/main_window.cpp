@@ -2,6 +2,7 @@
 
 #include "widgets/authoring_panel.h"
 #include "widgets/cut_panel.h"
+#include "widgets/quality_panel.h"
 #include "widgets/scenario_document.h"
 #include "widgets/simulation_controller.h"
 #include "widgets/simulation_panel.h"
@@ -62,6 +63,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_cutPanel = new CutPanel(*m_document, *m_session);
     m_simulationPanel = new SimulationPanel(*m_document, *m_simulation);
     m_authoringPanel = new AuthoringPanel(m_viewport);
+    m_qualityPanel = new QualityPanel;
+    m_qualityPanel->attach(m_viewport);
+    // A picked tet is inspected in the mesh on show (the preview, the simulated or the
+    // current tissue).
+    m_qualityPanel->setMeshProvider([this]() -> const TetMesh* { return m_shownMesh; });
     createActions();
     createDocks();
 
@@ -77,8 +83,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_session, &TissueSession::busyChanged, this, &MainWindow::onBusyChanged);
     connect(m_document, &ScenarioDocument::documentReset, this, [this] { m_frameNext = true; });
     connect(m_session, &TissueSession::baseChanged, this, &MainWindow::onBaseChanged);
-    connect(m_session, &TissueSession::currentChanged, this, [this] { refreshView(false); });
-    connect(m_session, &TissueSession::previewChanged, this, [this] { refreshView(false); });
+    connect(m_session, &TissueSession::currentChanged, this, [this] {
+        refreshView(false);
+        updateQualityViews();
+    });
+    connect(m_session, &TissueSession::previewChanged, this, [this] {
+        refreshView(false);
+        updateQualityViews();
+    });
     connect(m_session, &TissueSession::failed, this, [this](const QString& message) {
         if (!m_loadedOnce || !m_session->base())
             emit loadFailed(message);
@@ -212,6 +224,11 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::RightDockWidgetArea, simDock);
     tabifyDockWidget(cutDock, simDock);
     cutDock->raise();
+    QDockWidget* qualityDock = makeDock(tr("Quality"), QStringLiteral("qualityDock"), m_qualityPanel, this);
+    addDockWidget(Qt::RightDockWidgetArea, qualityDock);
+    tabifyDockWidget(simDock, qualityDock);
+    cutDock->raise();
+    m_viewMenu->addAction(qualityDock->toggleViewAction());
     QDockWidget* authorDock = makeDock(tr("Authoring"), QStringLiteral("authoringDock"), m_authoringPanel, this);
     addDockWidget(Qt::LeftDockWidgetArea, authorDock);
     m_viewMenu->addAction(authorDock->toggleViewAction());
@@ -410,7 +427,11 @@ void MainWindow::onBusyChanged(bool busy) {
 
 void MainWindow::onBaseChanged() {
     if (!m_session->base()) {
+        m_shownMesh = nullptr;
+        m_shownState.reset();
         m_viewport->clear();
+        m_qualityPanel->meshChanged();
+        updateQualityViews();
         updateStatus();
         return;
     }
@@ -423,32 +444,54 @@ void MainWindow::refreshView(bool frame) {
     // What is shown: the preview of a pending cut, else the simulated tissue once it has
     // moved, else the current tissue.
     const auto preview = m_session->preview();
-    const auto current = m_session->current();
-    const TetMesh* mesh = nullptr;
-    const TriangleSurface* surface = nullptr;
-    if (preview) {
-        mesh = &preview->mesh;
-        surface = &preview->surface.surface();
-    } else if (m_simulation->isReady() && m_simulation->steps() > 0) {
-        mesh = &m_simulation->mesh();
-        surface = &m_simulation->surface().surface();
-    } else if (current) {
-        mesh = &current->mesh;
-        surface = &current->surface.surface();
-    }
-    if (mesh == nullptr) {
+    const auto state = preview ? preview : m_session->current();
+    const bool simulated = !preview && state && m_simulation->isReady() && m_simulation->steps() > 0;
+    frame = frame || m_frameNext;
+    if (!state) {
+        m_shownMesh = nullptr;
+        m_shownState.reset();
         updateStatus();
         return;
     }
-    frame = frame || m_frameNext;
+    const TetMesh& mesh = simulated ? m_simulation->mesh() : state->mesh;
+    const TriangleSurface& surface = simulated ? m_simulation->surface().surface() : state->surface.surface();
+    // A simulation step only moves points (STYLE.md item 8).
+    if (simulated && !frame && m_shownMesh == &mesh && m_viewport->tetMeshActor().updatePositions(mesh)) {
+        if (m_showSurface->isChecked())
+            m_viewport->setSurface(surface, false);
+        m_viewport->requestRender();
+        return;
+    }
     m_frameNext = false;
-    m_viewport->setTetMesh(*mesh, frame);
-    m_viewport->setSurface(*surface, false);
+    m_shownState = state;
+    m_shownMesh = &mesh;
+    m_viewport->setTetMesh(mesh, frame);
+    m_viewport->tetMeshActor().setTetSchemes(state->schemes);
+    m_viewport->setSurface(surface, false);
+    m_qualityPanel->meshChanged();
     updateStatus();
     if (frame) {
         m_loadedOnce = true;
         emit meshLoaded();
     }
+}
+
+void MainWindow::updateQualityViews() {
+    // Before and after: the current tissue and its preview while a cut is pending, else the
+    // uncut tissue and the current one once the document has cuts.
+    const auto preview = m_session->preview();
+    const auto current = m_session->current();
+    const auto base = m_session->base();
+    const auto before = preview ? current : base;
+    const auto after = preview ? preview : (current && current->cuts > 0 ? current : nullptr);
+    if (before)
+        m_qualityPanel->setBeforeMesh(before->mesh, before->stableDt);
+    else
+        m_qualityPanel->clearBefore();
+    if (after)
+        m_qualityPanel->setAfterMesh(after->mesh, after->stableDt);
+    else
+        m_qualityPanel->clearAfter();
 }
 
 void MainWindow::setLanguagePreference(const QString& code) {

@@ -23,6 +23,9 @@ namespace resect {
 
 class AuthoringPanel;
 class CutPanel;
+class QualityPanel;
+struct TissueState;
+class TetMesh;
 class ScenarioDocument;
 class SimulationController;
 class SimulationPanel;
@@ -55,6 +58,7 @@ public:
     CutPanel* cutPanel() const { return m_cutPanel; }
     SimulationPanel* simulationPanel() const { return m_simulationPanel; }
     AuthoringPanel* authoringPanel() const { return m_authoringPanel; }
+    QualityPanel* qualityPanel() const { return m_qualityPanel; }
 
     /// Whether errors are shown in message boxes (default) or only signalled (tests, the
     /// command line's --screenshot).
@@ -93,6 +97,7 @@ private:
     void onBusyChanged(bool busy);
     void onBaseChanged();
     void refreshView(bool frame);
+    void updateQualityViews();
     void setLanguagePreference(const QString& code);
 
     ScenarioDocument* m_document = nullptr;
@@ -103,6 +108,11 @@ private:
     CutPanel* m_cutPanel = nullptr;
     SimulationPanel* m_simulationPanel = nullptr;
     AuthoringPanel* m_authoringPanel = nullptr;
+    QualityPanel* m_qualityPanel = nullptr;
+    /// The state whose mesh is on show (kept alive while shown) and the mesh itself (the
+    /// state's, or the simulation's).
+    std::shared_ptr<const TissueState> m_shownState;
+    const TetMesh* m_shownMesh = nullptr;
     QLabel* m_statusLabel = nullptr;
     QProgressDialog* m_progress = nullptr;
     QMenu* m_recentMenu = nullptr;
