@@ -131,14 +131,14 @@ struct TempDir {
 /// Folders created to hold the package (missing parents of OUT): removed again, innermost
 /// first and only while empty, on scope exit unless released.
 struct CreatedFolders {
-    std::vector<fs::path> paths;  // outermost first
+    std::vector<fs::path> paths; // outermost first
     bool keep = false;
     ~CreatedFolders() {
         if (keep)
             return;
         std::error_code ec;
         for (auto it = paths.rbegin(); it != paths.rend(); ++it)
-            fs::remove(*it, ec);  // only removes empty folders
+            fs::remove(*it, ec); // only removes empty folders
     }
 };
 
@@ -151,7 +151,8 @@ void exportPackage(const Scenario& scenario, const std::string& out, const Expor
         if (!fs::is_directory(target, ec))
             fail(ExportFailure::BadInput, out + ": exists and is not a folder");
         if (!fs::is_empty(target, ec) && !options.force)
-            fail(ExportFailure::BadInput, out + ": the folder is not empty (use --force to replace it)");
+            fail(ExportFailure::BadInput,
+                 out + ": the folder is not empty (use --force to replace it)");
     }
     // Never replace a folder that holds an input.
     std::vector<std::string> inputs;
@@ -168,12 +169,14 @@ void exportPackage(const Scenario& scenario, const std::string& out, const Expor
             inputs.push_back(resolveScenarioPath(scenario.baseDir, s.file));
     for (const std::string& input : inputs)
         if (isInside(input, target))
-            fail(ExportFailure::BadInput, out + ": holds " + input + ", an input of the scenario; export elsewhere");
+            fail(ExportFailure::BadInput,
+                 out + ": holds " + input + ", an input of the scenario; export elsewhere");
 
     // The package, in a temporary folder next to the target.
     const fs::path parent = target.parent_path();
     CreatedFolders created;
-    for (fs::path p = parent; !p.empty() && !fs::exists(p, ec) && p != p.parent_path(); p = p.parent_path())
+    for (fs::path p = parent; !p.empty() && !fs::exists(p, ec) && p != p.parent_path();
+         p = p.parent_path())
         created.paths.insert(created.paths.begin(), p);
     fs::create_directories(parent, ec);
     std::string pattern = (parent / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
@@ -190,7 +193,8 @@ void exportPackage(const Scenario& scenario, const std::string& out, const Expor
     for (std::size_t i = 0; i < tissueCount; ++i) {
         const TissueSpec& tissue = scenario.tissues[i];
         const std::string name = safeName(tissue.name, static_cast<int>(i));
-        const double from = kTissuesStart + (kTissuesEnd - kTissuesStart) * double(i) / double(tissueCount);
+        const double from =
+            kTissuesStart + (kTissuesEnd - kTissuesStart) * double(i) / double(tissueCount);
         const double span = (kTissuesEnd - kTissuesStart) / double(tissueCount);
         progress.step(from, "meshing:" + tissue.name);
         ReplayPlan plan;
@@ -206,7 +210,8 @@ void exportPackage(const Scenario& scenario, const std::string& out, const Expor
             const std::string copy = name + "-surface" + source.extension().string();
             fs::copy_file(source, root / copy, ec);
             if (ec)
-                fail(ExportFailure::Internal, "cannot copy " + source.string() + ": " + ec.message());
+                fail(ExportFailure::Internal,
+                     "cannot copy " + source.string() + ": " + ec.message());
             packed.surface = copy;
         }
         if (!plan.surface.triangles.empty())
@@ -216,7 +221,8 @@ void exportPackage(const Scenario& scenario, const std::string& out, const Expor
         TissueRun t;
         t.name = tissue.name;
         const Status replayed =
-            replay(std::move(plan), t.outcome, progress.replayProgress(from + 0.3 * span, from + 0.95 * span, replaying));
+            replay(std::move(plan), t.outcome,
+                   progress.replayProgress(from + 0.3 * span, from + 0.95 * span, replaying));
         if (progress.cancelled())
             fail(ExportFailure::Cancelled, "cancelled");
         if (!replayed.ok())
@@ -232,9 +238,11 @@ void exportPackage(const Scenario& scenario, const std::string& out, const Expor
     for (std::size_t i = 0; i < scenario.sweeps.size(); ++i)
         if (!scenario.sweeps[i].file.empty()) {
             const std::string copy = "sweep-" + std::to_string(i) + ".json";
-            fs::copy_file(resolveScenarioPath(scenario.baseDir, scenario.sweeps[i].file), root / copy, ec);
+            fs::copy_file(resolveScenarioPath(scenario.baseDir, scenario.sweeps[i].file),
+                          root / copy, ec);
             if (ec)
-                fail(ExportFailure::Internal, "cannot copy " + scenario.sweeps[i].file + ": " + ec.message());
+                fail(ExportFailure::Internal,
+                     "cannot copy " + scenario.sweeps[i].file + ": " + ec.message());
             package.sweeps[i].file = copy;
         }
     package.baseDir = root.string();
@@ -252,8 +260,9 @@ void exportPackage(const Scenario& scenario, const std::string& out, const Expor
     std::sort(written.begin(), written.end());
     for (const fs::path& f : written)
         entries.append(manifestEntry(root, f));
-    require(writeJson((root / "manifest.json").string(),
-                      QJsonObject{{"format", "resect-package"}, {"version", 1}, {"files", entries}}));
+    require(
+        writeJson((root / "manifest.json").string(),
+                  QJsonObject{{"format", "resect-package"}, {"version", 1}, {"files", entries}}));
 
     // Into place: the old folder (if any) goes only once the new one is complete.
     progress.step(0.99, "finishing");
@@ -269,13 +278,15 @@ void exportPackage(const Scenario& scenario, const std::string& out, const Expor
         if (ec) {
             std::error_code back;
             fs::rename(old, target, back);
-            fail(ExportFailure::Internal, "cannot move the package into " + out + ": " + ec.message());
+            fail(ExportFailure::Internal,
+                 "cannot move the package into " + out + ": " + ec.message());
         }
         fs::remove_all(old, ec);
     } else {
         fs::rename(root, target, ec);
         if (ec)
-            fail(ExportFailure::Internal, "cannot move the package into " + out + ": " + ec.message());
+            fail(ExportFailure::Internal,
+                 "cannot move the package into " + out + ": " + ec.message());
     }
     temp.path.clear();
     created.keep = true;
@@ -290,8 +301,9 @@ void exportPackage(const Scenario& scenario, const std::string& out, const Expor
 
 } // namespace
 
-Status exportTrainerPackage(const Scenario& scenario, const std::string& outDir, const ExportOptions& options,
-                            ExportSummary& out, const ExportProgress& progress) {
+Status exportTrainerPackage(const Scenario& scenario, const std::string& outDir,
+                            const ExportOptions& options, ExportSummary& out,
+                            const ExportProgress& progress) {
     out = ExportSummary{};
     ExportFailure kind = ExportFailure::Internal;
     std::string message;
@@ -316,7 +328,8 @@ Status exportTrainerPackage(const Scenario& scenario, const std::string& outDir,
 }
 
 Status exportTrainerPackage(const std::string& scenarioPath, const std::string& outDir,
-                            const ExportOptions& options, ExportSummary& out, const ExportProgress& progress) {
+                            const ExportOptions& options, ExportSummary& out,
+                            const ExportProgress& progress) {
     Scenario scenario;
     ScenarioDiagnostics diag;
     if (Status s = loadScenario(scenarioPath, scenario, diag); !s.ok()) {

@@ -49,12 +49,12 @@ struct ExportOptions {
 enum class ExportFailure { None, BadInput, Internal, Cancelled };
 
 struct ExportSummary {
-    std::string outDir;               ///< the package folder, absolute and normalised
-    std::vector<std::string> files;   ///< every file written, relative to outDir, sorted,
-                                      ///< "manifest.json" last
-    ScenarioRun run;                  ///< the recorded result (as in result/report.json)
-    bool expectationsPassed = false;  ///< run.allPassed()
-    ExportFailure failure = ExportFailure::None;  ///< set on every failure
+    std::string outDir;              ///< the package folder, absolute and normalised
+    std::vector<std::string> files;  ///< every file written, relative to outDir, sorted,
+                                     ///< "manifest.json" last
+    ScenarioRun run;                 ///< the recorded result (as in result/report.json)
+    bool expectationsPassed = false; ///< run.allPassed()
+    ExportFailure failure = ExportFailure::None; ///< set on every failure
 };
 
 /// Progress in [0, 1] and the current stage; return false to cancel. Called on the thread
@@ -62,7 +62,7 @@ struct ExportSummary {
 ///   "checking"               the output folder and the inputs
 ///   "meshing:NAME"           loading or meshing tissue NAME (not cancellable inside)
 ///   "writing:NAME"           its tet mesh, surface copy and visual surface
-///   "replaying:NAME"         its strokes, cuts and simulation (cancellable at every step)
+///   "replaying:NAME"         its strokes, cuts and simulation (cancellable every 64 steps)
 ///   "writing-result:NAME"    its result mesh and surface
 ///   "packaging"              sweeps, scenario.json and result/report.json
 ///   "manifest"               hashing every file

@@ -20,7 +20,7 @@
 <context>
     <name>resect::ExportRunner</name>
     <message numerus="yes">
-        <location filename="../widgets/export_runner.cpp" line="+85"/>
+        <location filename="../widgets/export_runner.cpp" line="+92"/>
         <source>Exported %n file(s) to %1; the expectations passed.</source>
         <translation>
             <numerusform>%n Datei nach %1 exportiert; die Erwartungen sind erfüllt.</numerusform>
@@ -28,7 +28,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Exported %n file(s) to %1; some expectations failed.</source>
         <translation>
             <numerusform>%n Datei nach %1 exportiert; einige Erwartungen sind nicht erfüllt.</numerusform>
@@ -36,7 +36,7 @@
         </translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Export to %1 cancelled.</source>
         <translation>Export nach %1 abgebrochen.</translation>
     </message>
@@ -46,7 +46,7 @@
         <translation>Export fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Exporting the trainer package...</source>
         <translation>Trainer-Paket wird exportiert...</translation>
     </message>
@@ -110,17 +110,17 @@
     <name>resect::Language</name>
     <message>
         <location filename="../widgets/language.cpp" line="+54"/>
-        <location line="+27"/>
+        <location line="+31"/>
         <source>unknown language &quot;%1&quot; (available: %2)</source>
         <translation>unbekannte Sprache „%1“ (verfügbar: %2)</translation>
     </message>
     <message>
-        <location line="-19"/>
+        <location line="-21"/>
         <source>the saved language &quot;%1&quot; is unknown (available: %2); it is ignored</source>
         <translation>die gespeicherte Sprache „%1“ ist unbekannt (verfügbar: %2); sie wird ignoriert</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+42"/>
         <source>the translation %1 is missing or unreadable</source>
         <translation>die Übersetzung %1 fehlt oder ist nicht lesbar</translation>
     </message>

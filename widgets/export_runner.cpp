@@ -18,18 +18,21 @@ ExportRunner::~ExportRunner() {
         m_thread.join();
 }
 
-bool ExportRunner::start(const Scenario& scenario, const QString& outDir, const ExportOptions& options) {
+bool ExportRunner::start(const Scenario& scenario, const QString& outDir,
+                         const ExportOptions& options) {
     return launch(
-        [scenario, out = outDir.toStdString(), options](ExportSummary& summary, const ExportProgress& progress) {
+        [scenario, out = outDir.toStdString(), options](ExportSummary& summary,
+                                                        const ExportProgress& progress) {
             return exportTrainerPackage(scenario, out, options, summary, progress);
         },
         outDir);
 }
 
-bool ExportRunner::start(const QString& scenarioPath, const QString& outDir, const ExportOptions& options) {
+bool ExportRunner::start(const QString& scenarioPath, const QString& outDir,
+                         const ExportOptions& options) {
     return launch(
-        [path = scenarioPath.toStdString(), out = outDir.toStdString(), options](ExportSummary& summary,
-                                                                                const ExportProgress& progress) {
+        [path = scenarioPath.toStdString(), out = outDir.toStdString(),
+         options](ExportSummary& summary, const ExportProgress& progress) {
             return exportTrainerPackage(path, out, options, summary, progress);
         },
         outDir);
@@ -52,7 +55,8 @@ bool ExportRunner::launch(Job job, const QString& outDir) {
             return !m_cancel.load();
         });
         QMetaObject::invokeMethod(
-            this, [this, status, summary] { finish(status, std::move(*summary)); }, Qt::QueuedConnection);
+            this, [this, status, summary] { finish(status, std::move(*summary)); },
+            Qt::QueuedConnection);
     });
     return true;
 }
@@ -65,7 +69,10 @@ void ExportRunner::reportProgress(double fraction, const std::string& stage) {
     m_lastPercent = percent;
     m_lastStage = stage;
     QMetaObject::invokeMethod(
-        this, [this, percent, text = QString::fromStdString(stage)] { emit progress(percent, stageText(text)); },
+        this,
+        [this, percent, text = QString::fromStdString(stage)] {
+            emit progress(percent, stageText(text));
+        },
         Qt::QueuedConnection);
 }
 
@@ -82,8 +89,10 @@ void ExportRunner::finish(Status status, ExportSummary summary) {
             files << dir.filePath(QString::fromStdString(f));
         const int n = static_cast<int>(files.size());
         message = m_summary.expectationsPassed
-                      ? tr("Exported %n file(s) to %1; the expectations passed.", nullptr, n).arg(dir.path())
-                      : tr("Exported %n file(s) to %1; some expectations failed.", nullptr, n).arg(dir.path());
+                      ? tr("Exported %n file(s) to %1; the expectations passed.", nullptr, n)
+                            .arg(dir.path())
+                      : tr("Exported %n file(s) to %1; some expectations failed.", nullptr, n)
+                            .arg(dir.path());
     } else if (m_summary.failure == ExportFailure::Cancelled) {
         message = tr("Export to %1 cancelled.").arg(m_outDir);
     } else {
@@ -100,7 +109,8 @@ void ExportRunner::cancel() {
 QProgressDialog* ExportRunner::showProgressDialog(QWidget* parent) {
     if (!m_running)
         return nullptr;
-    auto* dialog = new QProgressDialog(tr("Exporting the trainer package..."), tr("Cancel"), 0, 100, parent);
+    auto* dialog =
+        new QProgressDialog(tr("Exporting the trainer package..."), tr("Cancel"), 0, 100, parent);
     dialog->setObjectName(QStringLiteral("exportProgressDialog"));
     dialog->setWindowTitle(tr("Export for the trainer"));
     dialog->setWindowModality(Qt::WindowModal);

@@ -30,7 +30,8 @@ public:
     /// an export is already running. progress() and finished() follow, always finished().
     bool start(const Scenario& scenario, const QString& outDir, const ExportOptions& options = {});
     /// As above for a scenario file (loaded on the worker thread).
-    bool start(const QString& scenarioPath, const QString& outDir, const ExportOptions& options = {});
+    bool start(const QString& scenarioPath, const QString& outDir,
+               const ExportOptions& options = {});
 
     bool isRunning() const { return m_running; }
     /// The last finished export's summary (ExportSummary::failure tells why it failed).

@@ -51,7 +51,9 @@ QString chooseLanguage(const QString& commandLine, const QSettings& settings, co
     if (!commandLine.isEmpty()) {
         const QString code = languageCode(commandLine);
         if (code.isEmpty())
-            setError(error, QCoreApplication::translate("resect::Language", "unknown language \"%1\" (available: %2)").arg(commandLine, known));
+            setError(error, QCoreApplication::translate("resect::Language",
+                                                        "unknown language \"%1\" (available: %2)")
+                                .arg(commandLine, known));
         return code;
     }
     const QString saved = settings.value(QLatin1String(kLanguageSettingsKey)).toString();
@@ -59,7 +61,9 @@ QString chooseLanguage(const QString& commandLine, const QSettings& settings, co
         const QString code = languageCode(saved);
         if (!code.isEmpty())
             return code;
-        setError(error, QCoreApplication::translate("resect::Language", "the saved language \"%1\" is unknown (available: %2); it is ignored")
+        setError(error, QCoreApplication::translate(
+                            "resect::Language",
+                            "the saved language \"%1\" is unknown (available: %2); it is ignored")
                             .arg(saved, known));
     }
     for (const QString& name : system.uiLanguages()) {
@@ -78,7 +82,8 @@ bool installTranslations(QCoreApplication& app, const QString& code, QString* er
     setError(error, {});
     const QString language = languageCode(code);
     if (language.isEmpty() || language != code.trimmed().toLower()) {
-        setError(error, QCoreApplication::translate("resect::Language", "unknown language \"%1\" (available: %2)")
+        setError(error, QCoreApplication::translate("resect::Language",
+                                                    "unknown language \"%1\" (available: %2)")
                             .arg(code, availableLanguages().join(QStringLiteral(", "))));
         return false;
     }
@@ -98,14 +103,17 @@ bool installTranslations(QCoreApplication& app, const QString& code, QString* er
     const QString file = QStringLiteral(":/i18n/resect_studio_%1.qm").arg(language);
     if (!appTranslator->load(file)) {
         delete appTranslator;
-        setError(error, QCoreApplication::translate("resect::Language", "the translation %1 is missing or unreadable").arg(file));
+        setError(error, QCoreApplication::translate("resect::Language",
+                                                    "the translation %1 is missing or unreadable")
+                            .arg(file));
         return false;
     }
     QCoreApplication::installTranslator(appTranslator);
 
     auto* qtTranslator = new QTranslator(&app);
     qtTranslator->setObjectName(QLatin1String(kQtTranslatorName));
-    if (qtTranslator->load(QStringLiteral("qtbase_") + language, QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+    if (qtTranslator->load(QStringLiteral("qtbase_") + language,
+                           QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         QCoreApplication::installTranslator(qtTranslator);
     else
         delete qtTranslator;

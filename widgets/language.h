@@ -43,7 +43,8 @@ QString languageCode(const QString& text);
 QString chooseLanguage(const QString& commandLine, const QSettings& settings, const QLocale& system,
                        QString* error = nullptr);
 /// As above with the system's locale (QLocale::system()).
-QString chooseLanguage(const QString& commandLine, const QSettings& settings, QString* error = nullptr);
+QString chooseLanguage(const QString& commandLine, const QSettings& settings,
+                       QString* error = nullptr);
 
 /// Installs the translators for `code` into `app`, replacing those a previous call
 /// installed (the translators are children of `app`). "en" installs nothing (and removes a

@@ -24,7 +24,8 @@ int runExport(Args args) {
 
     ExportSummary summary;
     if (const Status s = exportTrainerPackage(scenario, out, options, summary); !s.ok())
-        throw CliError{summary.failure == ExportFailure::BadInput ? kBadInput : kInternal, s.message()};
+        throw CliError{summary.failure == ExportFailure::BadInput ? kBadInput : kInternal,
+                       s.message()};
     std::printf("%s: %zu files, expectations %s\n", out.c_str(), summary.files.size(),
                 summary.expectationsPassed ? "passed" : "FAILED");
     return kOk;

@@ -58,13 +58,14 @@ private slots:
         ExportSummary summary;
         QList<double> fractions;
         QStringList stages;
-        const Status s = exportTrainerPackage(scenario.toStdString(), out.toStdString(), {}, summary,
-                                              [&](double p, const std::string& stage) {
-                                                  fractions << p;
-                                                  if (stages.isEmpty() || stages.last() != QString::fromStdString(stage))
-                                                      stages << QString::fromStdString(stage);
-                                                  return true;
-                                              });
+        const Status s = exportTrainerPackage(
+            scenario.toStdString(), out.toStdString(), {}, summary,
+            [&](double p, const std::string& stage) {
+                fractions << p;
+                if (stages.isEmpty() || stages.last() != QString::fromStdString(stage))
+                    stages << QString::fromStdString(stage);
+                return true;
+            });
         QVERIFY2(s.ok(), s.message().c_str());
         QCOMPARE(summary.failure, ExportFailure::None);
         QCOMPARE(QString::fromStdString(summary.outDir), QDir(out).absolutePath());
@@ -77,11 +78,13 @@ private slots:
         QCOMPARE(fractions.last(), 1.0);
         for (int i = 1; i < fractions.size(); ++i)
             QVERIFY2(fractions[i] >= fractions[i - 1], qPrintable(QString::number(i)));
-        QCOMPARE(stages, (QStringList{"checking", "meshing:box", "writing:box", "replaying:box", "writing-result:box",
-                                      "packaging", "manifest", "finishing", "done"}));
+        QCOMPARE(stages,
+                 (QStringList{"checking", "meshing:box", "writing:box", "replaying:box",
+                              "writing-result:box", "packaging", "manifest", "finishing", "done"}));
 
         // The manifest lists every other file with its size and hash; the summary every file.
-        const QJsonObject manifest = QJsonDocument::fromJson(readBytes(out + "/manifest.json")).object();
+        const QJsonObject manifest =
+            QJsonDocument::fromJson(readBytes(out + "/manifest.json")).object();
         QCOMPARE(manifest["format"].toString(), QString("resect-package"));
         QStringList listed;
         for (const QJsonValue& v : manifest["files"].toArray()) {
@@ -92,8 +95,9 @@ private slots:
             QCOMPARE(QFileInfo(path).size(), qint64(f["size"].toDouble()));
             QCOMPARE(sha256Hex(path), f["sha256"].toString().toLatin1());
         }
-        const QStringList expected{"box-surface.obj", "box-visual.glb", "box.vtu",       "result/box.glb",
-                                   "result/box.vtu",  "result/report.json", "scenario.json", "sweep-0.json"};
+        const QStringList expected{"box-surface.obj", "box-visual.glb", "box.vtu",
+                                   "result/box.glb",  "result/box.vtu", "result/report.json",
+                                   "scenario.json",   "sweep-0.json"};
         QCOMPARE(listed, expected);
         QStringList reported;
         for (const std::string& f : summary.files)
@@ -114,13 +118,14 @@ private slots:
         QCOMPARE(packaged.sweeps[0].file, std::string("sweep-0.json"));
         // Inputs untouched, nothing else left next to the package.
         QCOMPARE(sha256Hex(scenario), before);
-        QCOMPARE(entries(dir.path()), (QStringList{"box.json", "box.obj", "box.vtu", "cut.json", "package"}));
+        QCOMPARE(entries(dir.path()),
+                 (QStringList{"box.json", "box.obj", "box.vtu", "cut.json", "package"}));
     }
 
     void cancelLeavesNothing_data() {
         QTest::addColumn<QString>("stage");
-        for (const char* stage : {"checking", "meshing:box", "writing:box", "replaying:box", "writing-result:box",
-                                  "packaging", "manifest", "finishing"})
+        for (const char* stage : {"checking", "meshing:box", "writing:box", "replaying:box",
+                                  "writing-result:box", "packaging", "manifest", "finishing"})
             QTest::newRow(stage) << QString(stage);
     }
     void cancelLeavesNothing() {
@@ -131,15 +136,16 @@ private slots:
         // The package goes into folders that do not exist yet: they go again on cancel.
         const QString out = dir.filePath("new/sub/package");
         ExportSummary summary;
-        int calls = 0;  // reports of the stage to cancel at
-        const Status s = exportTrainerPackage(scenario.toStdString(), out.toStdString(), {}, summary,
-                                              [&](double, const std::string& now) {
-                                                  if (QString::fromStdString(now) != stage)
-                                                      return true;
-                                                  // The replay is cancelled from inside: at
-                                                  // its own first report, not at the export's.
-                                                  return ++calls < (stage == "replaying:box" ? 2 : 1);
-                                              });
+        int calls = 0; // reports of the stage to cancel at
+        const Status s =
+            exportTrainerPackage(scenario.toStdString(), out.toStdString(), {}, summary,
+                                 [&](double, const std::string& now) {
+                                     if (QString::fromStdString(now) != stage)
+                                         return true;
+                                     // The replay is cancelled from inside: at
+                                     // its own first report, not at the export's.
+                                     return ++calls < (stage == "replaying:box" ? 2 : 1);
+                                 });
         QCOMPARE(QString::fromStdString(s.message()), QString("cancelled"));
         QCOMPARE(summary.failure, ExportFailure::Cancelled);
         QVERIFY(summary.files.empty());
@@ -157,13 +163,15 @@ private slots:
         const QStringList before = entries(dir.path());
         ExportOptions force;
         force.force = true;
-        const Status s = exportTrainerPackage(scenario.toStdString(), out.toStdString(), force, summary,
-                                              [](double, const std::string& stage) { return stage != "finishing"; });
+        const Status s = exportTrainerPackage(
+            scenario.toStdString(), out.toStdString(), force, summary,
+            [](double, const std::string& stage) { return stage != "finishing"; });
         QCOMPARE(QString::fromStdString(s.message()), QString("cancelled"));
         QCOMPARE(snapshot(out), old);
         QCOMPARE(entries(dir.path()), before);
         // Not cancelled, it replaces the folder as a whole.
-        QVERIFY(exportTrainerPackage(scenario.toStdString(), out.toStdString(), force, summary).ok());
+        QVERIFY(
+            exportTrainerPackage(scenario.toStdString(), out.toStdString(), force, summary).ok());
         QVERIFY(!QFileInfo::exists(out + "/note.txt"));
         QVERIFY(QFileInfo::exists(out + "/manifest.json"));
         QCOMPARE(entries(dir.path()), before);
@@ -178,7 +186,8 @@ private slots:
         const QMap<QString, QByteArray> old = snapshot(out);
         const QStringList before = entries(dir.path());
         ExportSummary summary;
-        const Status s = exportTrainerPackage(scenario.toStdString(), out.toStdString(), {}, summary);
+        const Status s =
+            exportTrainerPackage(scenario.toStdString(), out.toStdString(), {}, summary);
         QVERIFY(!s.ok());
         QCOMPARE(summary.failure, ExportFailure::BadInput);
         QVERIFY2(s.message().find(out.toStdString()) != std::string::npos, s.message().c_str());
@@ -202,10 +211,11 @@ private slots:
         force.force = true;
         s = exportTrainerPackage(scenario.toStdString(), dir.path().toStdString(), force, summary);
         QCOMPARE(summary.failure, ExportFailure::BadInput);
-        QVERIFY2(s.message().find("an input of the scenario") != std::string::npos, s.message().c_str());
+        QVERIFY2(s.message().find("an input of the scenario") != std::string::npos,
+                 s.message().c_str());
         // A scenario file that does not load.
-        s = exportTrainerPackage(dir.filePath("missing.json").toStdString(), dir.filePath("p").toStdString(), {},
-                                 summary);
+        s = exportTrainerPackage(dir.filePath("missing.json").toStdString(),
+                                 dir.filePath("p").toStdString(), {}, summary);
         QCOMPARE(summary.failure, ExportFailure::BadInput);
         QVERIFY2(s.message().find("missing.json") != std::string::npos, s.message().c_str());
         QCOMPARE(entries(dir.path()), before);

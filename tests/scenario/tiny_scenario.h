@@ -23,14 +23,17 @@ inline QString writeTinyScenario(const QString& dir) {
     computeLumpedMasses(mesh, Material{}.density);
     if (!writeVtu((dir + "/box.vtu").toStdString(), mesh).ok())
         qFatal("cannot write box.vtu");
-    if (!writeSurface((dir + "/box.obj").toStdString(), makeBox(Vec3::Constant(0.2), Vec3::Constant(3.8))).ok())
+    if (!writeSurface((dir + "/box.obj").toStdString(),
+                      makeBox(Vec3::Constant(0.2), Vec3::Constant(3.8)))
+             .ok())
         qFatal("cannot write box.obj");
     const auto write = [&dir](const char* name, const QByteArray& text) {
         QFile f(dir + "/" + name);
         if (!f.open(QIODevice::WriteOnly) || f.write(text) != text.size())
             qFatal("cannot write %s", name);
     };
-    write("cut.json", R"({"curves": [[[-1, -1, 2.3], [-1, 5, 2.3]], [[5, -1, 2.31], [5, 5, 2.31]]]})");
+    write("cut.json",
+          R"({"curves": [[[-1, -1, 2.3], [-1, 5, 2.3]], [[5, -1, 2.31], [5, 5, 2.31]]]})");
     write("box.json", R"({"format": "resect-scenario", "version": 1,
         "tissues": [{"name": "box", "surface": "box.obj", "mesh": "box.vtu",
                      "fixed_regions": [{"min": [-1, -1, -1], "max": [5, 5, 0.001]}]}],

@@ -49,18 +49,20 @@ private slots:
         });
         QSignalSpy finished(&runner, &ExportRunner::finished);
         QVERIFY(runner.start(scenario, out));
-        QVERIFY(runner.isRunning());  // start() did not wait for the export
-        QVERIFY(!runner.start(scenario, dir.filePath("other")));  // one at a time
+        QVERIFY(runner.isRunning()); // start() did not wait for the export
+        QVERIFY(!runner.start(scenario, dir.filePath("other"))); // one at a time
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kTimeoutMs);
         QVERIFY(!runner.isRunning());
         const QList<QVariant> result = finished.takeFirst();
         QVERIFY2(result[0].toBool(), qPrintable(result[1].toString()));
-        QVERIFY2(result[1].toString().contains(QDir(out).absolutePath()), qPrintable(result[1].toString()));
+        QVERIFY2(result[1].toString().contains(QDir(out).absolutePath()),
+                 qPrintable(result[1].toString()));
         const QStringList files = result[2].toStringList();
         QCOMPARE(files.size(), 9);
         QCOMPARE(QFileInfo(files.last()).fileName(), QString("manifest.json"));
         for (const QString& f : files)
-            QVERIFY2(QFileInfo(f).isFile() && QFileInfo(f).absolutePath().startsWith(QDir(out).absolutePath()),
+            QVERIFY2(QFileInfo(f).isFile() &&
+                         QFileInfo(f).absolutePath().startsWith(QDir(out).absolutePath()),
                      qPrintable(f));
         QVERIFY(onGuiThread);
         QVERIFY(!percents.isEmpty());
@@ -70,7 +72,8 @@ private slots:
         QCOMPARE(runner.summary().failure, ExportFailure::None);
         QVERIFY(runner.summary().expectationsPassed);
         QVERIFY(!QDir(dir.path()).exists("other"));
-        QCOMPARE(entries(dir.path()), (QStringList{"box.json", "box.obj", "box.vtu", "cut.json", "package"}));
+        QCOMPARE(entries(dir.path()),
+                 (QStringList{"box.json", "box.obj", "box.vtu", "cut.json", "package"}));
     }
 
     void cancelRightAfterStartLeavesNoFolder() {
@@ -88,7 +91,7 @@ private slots:
         QVERIFY(result[2].toStringList().isEmpty());
         QCOMPARE(runner.summary().failure, ExportFailure::Cancelled);
         QVERIFY(!QFileInfo::exists(out));
-        QCOMPARE(entries(dir.path()), before);  // no temporary folder either
+        QCOMPARE(entries(dir.path()), before); // no temporary folder either
         // The runner is reusable afterwards.
         QVERIFY(runner.start(scenario, out));
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kTimeoutMs);
@@ -105,7 +108,8 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kTimeoutMs);
         const QList<QVariant> result = finished.takeFirst();
         QVERIFY(!result[0].toBool());
-        QVERIFY2(result[1].toString().contains(file) && result[1].toString().contains("not a folder"),
+        QVERIFY2(result[1].toString().contains(file) &&
+                     result[1].toString().contains("not a folder"),
                  qPrintable(result[1].toString()));
         QCOMPARE(runner.summary().failure, ExportFailure::BadInput);
     }
@@ -116,7 +120,7 @@ private slots:
         const QStringList before = entries(dir.path());
         ExportRunner runner;
         QSignalSpy finished(&runner, &ExportRunner::finished);
-        QVERIFY(!runner.showProgressDialog(nullptr));  // nothing running
+        QVERIFY(!runner.showProgressDialog(nullptr)); // nothing running
         QVERIFY(runner.start(scenario, dir.filePath("package")));
         QPointer<QProgressDialog> dialog = runner.showProgressDialog(nullptr);
         QVERIFY(dialog);
@@ -127,12 +131,13 @@ private slots:
         cancel->click();
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kTimeoutMs);
         QVERIFY(!finished.takeFirst()[0].toBool());
-        QTRY_VERIFY(dialog.isNull());  // closed and deleted
+        QTRY_VERIFY(dialog.isNull()); // closed and deleted
         QCOMPARE(entries(dir.path()), before);
     }
 
     void stageTextsAreReadable() {
-        QCOMPARE(ExportRunner::stageText("replaying:polyp"), QString("Replaying the strokes on polyp..."));
+        QCOMPARE(ExportRunner::stageText("replaying:polyp"),
+                 QString("Replaying the strokes on polyp..."));
         QCOMPARE(ExportRunner::stageText("meshing:a:b"), QString("Meshing a:b..."));
         QCOMPARE(ExportRunner::stageText("something-new"), QString("something-new"));
     }
@@ -146,7 +151,7 @@ private slots:
             QVERIFY(runner.start(scenario, dir.filePath("package")));
         }
         QCOMPARE(entries(dir.path()), before);
-        QCoreApplication::processEvents();  // the dropped reports must not reach anything
+        QCoreApplication::processEvents(); // the dropped reports must not reach anything
     }
 };
 

@@ -29,8 +29,8 @@ namespace {
 struct TsMessage {
     QString context;
     QString source;
-    QString type;              ///< the translation's type attribute ("unfinished", "vanished", ...)
-    QStringList translations;  ///< one, or every numerus form
+    QString type;             ///< the translation's type attribute ("unfinished", "vanished", ...)
+    QStringList translations; ///< one, or every numerus form
     bool numerus = false;
 };
 
@@ -120,7 +120,7 @@ private slots:
     void cleanup() { QVERIFY(installTranslations(*qApp, "en")); }
 
     void translationsAreEmbedded() {
-        for (const QString& code : {"de", "fr"}) {
+        for (const QString code : {"de", "fr"}) {
             const QString file = QStringLiteral(":/i18n/resect_studio_%1.qm").arg(code);
             QVERIFY2(QFile::exists(file), qPrintable(file + " is not linked into the executable"));
         }
@@ -131,10 +131,17 @@ private slots:
         QTest::addColumn<QString>("code");
         QTest::addColumn<QString>("file");
         QTest::addColumn<QString>("open");
-        QTest::addColumn<QString>("cancel");  // Qt's own (qtbase): a standard button
-        QTest::newRow("de") << "de" << "&Datei" << QString::fromUtf8("Ö&ffnen...") << "Abbrechen";
-        QTest::newRow("fr") << "fr" << "&Fichier" << "&Ouvrir..." << "Annuler";
-        QTest::newRow("en") << "en" << "&File" << "&Open..." << "Cancel";
+        QTest::addColumn<QString>("cancel"); // Qt's own (qtbase): a standard button
+        QTest::newRow("de") << "de"
+                            << "&Datei" << QString::fromUtf8("Ö&ffnen...") << "Abbrechen";
+        QTest::newRow("fr") << "fr"
+                            << "&Fichier"
+                            << "&Ouvrir..."
+                            << "Annuler";
+        QTest::newRow("en") << "en"
+                            << "&File"
+                            << "&Open..."
+                            << "Cancel";
     }
     void installTranslates() {
         QFETCH(QString, code);
@@ -148,11 +155,11 @@ private slots:
         QVERIFY(error.isEmpty());
         QCOMPARE(QCoreApplication::translate("resect::MainWindow", "&File"), file);
         QCOMPARE(QCoreApplication::translate("resect::MainWindow", "&Open..."), open);
-        QCOMPARE(QCoreApplication::translate("resect::ExportRunner", "Meshing %1...").arg("polyp").isEmpty(), false);
         QCOMPARE(QCoreApplication::translate("QPlatformTheme", "Cancel"), cancel);
         if (code != "en") {
             const QString three = QCoreApplication::translate(
-                "resect::ExportRunner", "Exported %n file(s) to %1; the expectations passed.", nullptr, 3);
+                "resect::ExportRunner", "Exported %n file(s) to %1; the expectations passed.",
+                nullptr, 3);
             QVERIFY2(three.startsWith("3 ") && !three.startsWith("3 file"), qPrintable(three));
         }
     }
@@ -162,26 +169,53 @@ private slots:
         QVERIFY(!installTranslations(*qApp, "xx", &error));
         QVERIFY2(error.contains("\"xx\"") && error.contains("en, de, fr"), qPrintable(error));
         QCOMPARE(QCoreApplication::translate("resect::MainWindow", "&File"), QString("&File"));
-        QVERIFY(!installTranslations(*qApp, "de_DE", &error));  // install takes a code only
+        QVERIFY(!installTranslations(*qApp, "de_DE", &error)); // install takes a code only
         QVERIFY(installTranslations(*qApp, "DE", &error));
         QCOMPARE(QCoreApplication::translate("resect::MainWindow", "&File"), QString("&Datei"));
     }
 
     void chooseLanguagePrecedence_data() {
         QTest::addColumn<QString>("commandLine");
-        QTest::addColumn<QString>("saved");   // empty: no preference
-        QTest::addColumn<QString>("system");  // a locale name
+        QTest::addColumn<QString>("saved");  // empty: no preference
+        QTest::addColumn<QString>("system"); // a locale name
         QTest::addColumn<QString>("expected");
         QTest::addColumn<bool>("warns");
-        QTest::newRow("command line wins") << "fr" << "de" << "de_DE" << "fr" << false;
-        QTest::newRow("command line, locale form") << "fr_CA" << "" << "C" << "fr" << false;
-        QTest::newRow("command line unknown") << "xx" << "de" << "de_DE" << "" << true;
-        QTest::newRow("preference next") << "" << "de" << "fr_FR" << "de" << false;
-        QTest::newRow("unknown preference skipped") << "" << "klingon" << "fr_FR" << "fr" << true;
-        QTest::newRow("system next") << "" << "" << "fr_BE" << "fr" << false;
-        QTest::newRow("system German") << "" << "" << "de_AT" << "de" << false;
-        QTest::newRow("unavailable system: English") << "" << "" << "ja_JP" << "en" << false;
-        QTest::newRow("C locale: English") << "" << "" << "C" << "en" << false;
+        QTest::newRow("command line wins") << "fr"
+                                           << "de"
+                                           << "de_DE"
+                                           << "fr" << false;
+        QTest::newRow("command line, locale form") << "fr_CA"
+                                                   << ""
+                                                   << "C"
+                                                   << "fr" << false;
+        QTest::newRow("command line unknown") << "xx"
+                                              << "de"
+                                              << "de_DE"
+                                              << "" << true;
+        QTest::newRow("preference next") << ""
+                                         << "de"
+                                         << "fr_FR"
+                                         << "de" << false;
+        QTest::newRow("unknown preference skipped") << ""
+                                                    << "klingon"
+                                                    << "fr_FR"
+                                                    << "fr" << true;
+        QTest::newRow("system next") << ""
+                                     << ""
+                                     << "fr_BE"
+                                     << "fr" << false;
+        QTest::newRow("system German") << ""
+                                       << ""
+                                       << "de_AT"
+                                       << "de" << false;
+        QTest::newRow("unavailable system: English") << ""
+                                                     << ""
+                                                     << "ja_JP"
+                                                     << "en" << false;
+        QTest::newRow("C locale: English") << ""
+                                           << ""
+                                           << "C"
+                                           << "en" << false;
     }
     void chooseLanguagePrecedence() {
         QFETCH(QString, commandLine);
@@ -197,7 +231,8 @@ private slots:
         QCOMPARE(chooseLanguage(commandLine, settings, QLocale(system), &error), expected);
         QCOMPARE(!error.isEmpty(), warns);
         if (warns)
-            QVERIFY2(error.contains(commandLine.isEmpty() ? saved : commandLine), qPrintable(error));
+            QVERIFY2(error.contains(commandLine.isEmpty() ? saved : commandLine),
+                     qPrintable(error));
     }
 
     void everyMessageIsTranslated_data() {
@@ -238,14 +273,15 @@ private slots:
         const QString lupdate = QStringLiteral(RESECT_LUPDATE);
         if (!QFile::exists(lupdate))
             QSKIP("lupdate is not installed");
-        for (const QString& code : {"de", "fr"}) {
+        for (const QString code : {"de", "fr"}) {
             QTemporaryDir dir;
             const QString scratch = dir.filePath("scratch.ts");
             QVERIFY(QFile::copy(tsPath(code), scratch));
             QProcess p;
             p.setWorkingDirectory(RESECT_SOURCE_DIR);
-            p.start(lupdate, {"-I", ".", "-no-obsolete", "-locations", "none", "-source-language", "en",
-                              "-target-language", code, "widgets", "app/studio", "-ts", scratch});
+            p.start(lupdate,
+                    {"-I", ".", "-no-obsolete", "-locations", "none", "-source-language", "en",
+                     "-target-language", code, "widgets", "app/studio", "-ts", scratch});
             QVERIFY(p.waitForFinished(120'000));
             QCOMPARE(p.exitCode(), 0);
             QString language, error;
@@ -255,13 +291,16 @@ private slots:
             for (const TsMessage& m : readTs(tsPath(code), language, error))
                 if (m.type != QLatin1String("vanished") && m.type != QLatin1String("obsolete"))
                     checkedIn << m.context + "|" + m.source;
-            QStringList added = (current - checkedIn).values(), gone = (checkedIn - current).values();
+            QStringList added = (current - checkedIn).values(),
+                        gone = (checkedIn - current).values();
             added.sort();
             gone.sort();
-            QVERIFY2(added.isEmpty() && gone.isEmpty(),
-                     qPrintable("translations/resect_studio_" + code +
-                                ".ts is out of date: run tools/update_translations.sh and translate.\n  new: " +
-                                added.join("\n       ") + "\n  gone: " + gone.join("\n        ")));
+            QVERIFY2(
+                added.isEmpty() && gone.isEmpty(),
+                qPrintable(
+                    "translations/resect_studio_" + code +
+                    ".ts is out of date: run tools/update_translations.sh and translate.\n  new: " +
+                    added.join("\n       ") + "\n  gone: " + gone.join("\n        ")));
         }
     }
 };
