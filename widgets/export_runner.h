@@ -51,7 +51,8 @@ public slots:
     void cancel();
 
 signals:
-    /// On the runner's thread; only when the percentage or the stage changes.
+    /// On the runner's thread, only when the percentage (0..100) or the stage changes;
+    /// `stage` is the translated text (stageText) of the export's stage.
     void progress(int percent, const QString& stage);
     /// ok: the package is complete in `message`'s folder; `files` are the package's files
     /// (absolute paths, manifest.json last). Otherwise `message` says why (naming the folder
