@@ -51,7 +51,7 @@ StudyConfig tinyConfig() {
     c.relaxSteps = {0, 10};
     c.repeats = 1;
     c.simSteps = 2;
-    c.scalingSizes = {750, 6000};
+    c.scalingSizes = {3000, 24000};
     c.scalingRepeats = 1;
     c.scalingMaxSteps = 5;
     c.surfaceUpdates = 1;

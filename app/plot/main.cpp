@@ -14,6 +14,7 @@
 // before VTK touches them, so that it fails with a message instead of aborting.
 // Exit codes: 0 written; 2 bad input (a missing or malformed CSV); 1 cannot render (no
 // display, no GLX, a blank image, a write failure).
+#include "app/plot/display_check.h"
 #include "scenario/atomic_file.h"
 
 #include <vtkAxis.h>
@@ -36,9 +37,6 @@
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
-
-#include <GL/glx.h>
-#include <X11/Xlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -140,6 +138,8 @@ void addSeries(vtkChart* chart, const std::string& label, Points points, Rgb col
         return;
     if (sortByX)
         std::sort(points.begin(), points.end());
+    if (points.size() < 2 && style != Style::Markers)
+        style = Style::LineAndMarkers;  // one point: drawn as a marker (a line needs two)
     vtkNew<vtkTable> table;
     vtkNew<vtkDoubleArray> xs, ys;
     xs->SetName("x");
@@ -151,7 +151,8 @@ void addSeries(vtkChart* chart, const std::string& label, Points points, Rgb col
         table->SetValue(static_cast<vtkIdType>(i), 0, points[i].first);
         table->SetValue(static_cast<vtkIdType>(i), 1, points[i].second);
     }
-    vtkPlot* plot = chart->AddPlot(style == Style::Markers ? vtkChart::POINTS : vtkChart::LINE);
+    const bool line = style != Style::Markers && points.size() >= 2;
+    vtkPlot* plot = chart->AddPlot(line ? vtkChart::LINE : vtkChart::POINTS);
     plot->SetInputData(table, 0, 1);
     plot->SetLabel(label);
     plot->SetColor(colour.r, colour.g, colour.b, 255);
@@ -368,17 +369,8 @@ void plotScaling(const Csv& csv, const std::string& dir) {
 
 /// Fails unless an X display with GLX is reachable (VTK 9.1 aborts without one).
 void requireDisplay() {
-    const char* name = std::getenv("DISPLAY");
-    if (!name || !*name)
-        throw Failure{1, "no X display (DISPLAY is unset): run under xvfb-run -a"};
-    Display* display = XOpenDisplay(nullptr);
-    if (!display)
-        throw Failure{1, std::string("cannot open the X display '") + name + "'"};
-    int errorBase = 0, eventBase = 0;
-    const bool glx = glXQueryExtension(display, &errorBase, &eventBase);
-    XCloseDisplay(display);
-    if (!glx)
-        throw Failure{1, std::string("the X display '") + name + "' has no GLX (OpenGL)"};
+    if (const std::string problem = resect::plot::displayProblem(); !problem.empty())
+        throw Failure{1, problem};
 }
 
 } // namespace
