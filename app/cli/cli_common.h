@@ -69,5 +69,6 @@ int runRun(Args args);
 int runExport(Args args);
 int runBench(Args args);
 int runBenchSim(Args& args);  ///< resect bench sim (command_bench_sim.cpp)
+int runBenchStudy(Args& args);  ///< resect bench [--quick] --out DIR (command_bench_study.cpp)
 
 } // namespace resect::cli

@@ -1,7 +1,7 @@
 // resect bench cut-scaling [--sizes 10000,100000,1000000] [--repeats 7] [--out scaling.csv]
 // The same local cut on structured meshes of growing size: the cut must cost in proportion to
-// the tets it touches, not to the mesh size. (The full accuracy-versus-time study comes with
-// the benchmark issue.)
+// the tets it touches, not to the mesh size. The accuracy-versus-time study (`resect bench
+// [--quick] --out DIR`) is in command_bench_study.cpp.
 #include "app/cli/cli_common.h"
 
 #include "core/cut/hybrid_cutter.h"
@@ -38,10 +38,7 @@ int runCutScaling(Args& args) {
     }
     const int repeats = args.integer("--repeats", 1, 1000).value_or(7);
     const auto out = args.option("--out");
-    const auto what = args.positionals();
     args.finish();
-    if (what.size() != 1 || what[0] != "cut-scaling")
-        badInput("expected a study name: cut-scaling");
 
     std::string csv = "mesh_tets,touched_tets,added_tets,cut_ms_median,cut_ms_min,us_per_touched_tet\n";
     std::printf("%10s %12s %10s %14s %12s %18s\n", "mesh_tets", "touched_tets", "added", "cut_ms_median",
@@ -153,7 +150,9 @@ int runBench(Args args) {
         return runBenchSim(args);
     if (args.flag("surface"))
         return runSurface(args);
-    return runCutScaling(args);
+    if (args.flag("cut-scaling"))
+        return runCutScaling(args);
+    return runBenchStudy(args);
 }
 
 } // namespace resect::cli

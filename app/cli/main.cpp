@@ -38,6 +38,12 @@ commands:
   export SCENARIO.json --out DIR [--force]
                                     a self-contained trainer package (meshes, glTF surfaces,
                                     the expert's result, manifest with SHA-256)
+  bench [--quick] --out DIR [--no-plots]
+                                    what accuracy costs in time: DIR/accuracy_time.csv,
+                                    scaling.csv, summary.md (targets, run time) and PNG
+                                    plots (drawn by resect-plot, under xvfb-run -a if
+                                    DISPLAY is unset); --quick: a few minutes. Exit 1 if
+                                    the plots cannot be drawn (the CSVs are still written)
   bench cut-scaling [--sizes 10000,100000,1000000] [--repeats 7] [--out scaling.csv]
                                     the same local cut on meshes of growing size
   bench sim [--sizes 10000,100000,1000000] [--threads 1,2] [--steps N]
