@@ -55,10 +55,6 @@ int effectRank(const std::string& name) {
     return static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
 }
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("resect::ScenarioCommand", text);
-}
-
 } // namespace
 
 // ---- ScenarioCommand -------------------------------------------------------------------
@@ -78,7 +74,7 @@ void ScenarioCommand::notify(unsigned parts) {
 
 SetCutSettingsCommand::SetCutSettingsCommand(ScenarioDocument& document, CutSettings before,
                                              CutSettings after, CutField field)
-    : ScenarioCommand(document, tr("Change cut settings")), m_before(std::move(before)),
+    : ScenarioCommand(document, QCoreApplication::translate("resect::ScenarioCommand", "Change cut settings")), m_before(std::move(before)),
       m_after(std::move(after)), m_field(field) {}
 
 void SetCutSettingsCommand::redo() {
@@ -106,7 +102,7 @@ bool SetCutSettingsCommand::mergeWith(const QUndoCommand* other) {
 // ---- Strokes ---------------------------------------------------------------------------
 
 AddStrokeCommand::AddStrokeCommand(ScenarioDocument& document, Stroke stroke, int index)
-    : ScenarioCommand(document, tr("Add stroke")), m_stroke(std::move(stroke)),
+    : ScenarioCommand(document, QCoreApplication::translate("resect::ScenarioCommand", "Add stroke")), m_stroke(std::move(stroke)),
       m_index(clampedIndex(scenario().strokes, index)) {}
 
 void AddStrokeCommand::redo() {
@@ -122,7 +118,7 @@ void AddStrokeCommand::undo() {
 }
 
 RemoveStrokeCommand::RemoveStrokeCommand(ScenarioDocument& document, int index)
-    : ScenarioCommand(document, tr("Remove stroke")),
+    : ScenarioCommand(document, QCoreApplication::translate("resect::ScenarioCommand", "Remove stroke")),
       m_stroke(scenario().strokes.at(static_cast<std::size_t>(index))), m_index(index) {}
 
 void RemoveStrokeCommand::redo() {
@@ -140,7 +136,7 @@ void RemoveStrokeCommand::undo() {
 // ---- Sweeps ----------------------------------------------------------------------------
 
 AddSweepCommand::AddSweepCommand(ScenarioDocument& document, SweepSpec sweep, int index)
-    : ScenarioCommand(document, tr("Add sweep")), m_sweep(std::move(sweep)),
+    : ScenarioCommand(document, QCoreApplication::translate("resect::ScenarioCommand", "Add sweep")), m_sweep(std::move(sweep)),
       m_baseDir(scenario().baseDir), m_index(clampedIndex(scenario().sweeps, index)) {}
 
 void AddSweepCommand::redo() {
@@ -157,7 +153,7 @@ void AddSweepCommand::undo() {
 }
 
 RemoveSweepCommand::RemoveSweepCommand(ScenarioDocument& document, int index)
-    : ScenarioCommand(document, tr("Remove sweep")),
+    : ScenarioCommand(document, QCoreApplication::translate("resect::ScenarioCommand", "Remove sweep")),
       m_sweep(scenario().sweeps.at(static_cast<std::size_t>(index))),
       m_baseDir(scenario().baseDir), m_index(index) {}
 
@@ -178,7 +174,7 @@ void RemoveSweepCommand::undo() {
 
 SetEffectEnabledCommand::SetEffectEnabledCommand(ScenarioDocument& document, EffectSpec effect,
                                                  bool enable)
-    : ScenarioCommand(document, enable ? tr("Switch effect on") : tr("Switch effect off")),
+    : ScenarioCommand(document, enable ? QCoreApplication::translate("resect::ScenarioCommand", "Switch effect on") : QCoreApplication::translate("resect::ScenarioCommand", "Switch effect off")),
       m_effect(std::move(effect)), m_enable(enable) {
     if (!m_enable) {
         // Keep the effect as it is now (parameters and unknown fields) for undo.
@@ -230,7 +226,7 @@ void SetEffectEnabledCommand::undo() {
 
 SetTitleCommand::SetTitleCommand(ScenarioDocument& document, std::string before,
                                  std::string after)
-    : ScenarioCommand(document, tr("Change title")), m_before(std::move(before)),
+    : ScenarioCommand(document, QCoreApplication::translate("resect::ScenarioCommand", "Change title")), m_before(std::move(before)),
       m_after(std::move(after)) {}
 
 void SetTitleCommand::redo() {

@@ -1,7 +1,9 @@
 // resect-studio: the desktop editor.
 //
-//     resect-studio [--sample polyp|myoma] [--open FILE] [--screenshot PNG]
+//     resect-studio [--sample polyp|myoma] [--open FILE] [--screenshot PNG] [--lang CODE]
 //
+// --lang en|de|fr sets the interface language for this run; without it the preference
+// saved from the Language menu applies, else the system's language (widgets/language.h).
 // Without --open it meshes and shows the sample polyp (or the sample named by --sample).
 // --screenshot loads, shows the window, waits for the 3-D view's first frame, writes the
 // window image atomically and exits 0. Bad input: one line on stderr, exit 2; an internal
@@ -10,6 +12,7 @@
 #include "main_window.h"
 
 #include "core/mesher/samples.h"
+#include "widgets/language.h"
 #include "widgets/opengl_support.h"
 #include "widgets/tissue_session.h"
 #include "widgets/vtk_viewport.h"
@@ -20,6 +23,7 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QSaveFile>
+#include <QSettings>
 #include <QSurfaceFormat>
 #include <QTextStream>
 #include <QTimer>
@@ -102,6 +106,12 @@ int main(int argc, char* argv[]) {
         QStringLiteral("screenshot"),
         QStringLiteral("Write a PNG of the window once the view has rendered, then exit."),
         QStringLiteral("png"));
+    const QCommandLineOption langOption(
+        QStringLiteral("lang"),
+        QStringLiteral("Interface language (%1); default: the saved preference, else the system's.")
+            .arg(resect::availableLanguages().join(QLatin1Char('|'))),
+        QStringLiteral("code"));
+    parser.addOption(langOption);
     parser.addOption(sampleOption);
     parser.addOption(openOption);
     parser.addOption(screenshotOption);
@@ -122,6 +132,23 @@ int main(int argc, char* argv[]) {
     if (parser.isSet(sampleOption) && parser.isSet(openOption)) {
         printError(QStringLiteral("--sample and --open exclude each other"));
         return kExitBadInput;
+    }
+
+    // The language, before any window exists so that every string is translated.
+    {
+        QString error;
+        const QString code =
+            resect::chooseLanguage(parser.value(langOption), QSettings(), &error);
+        if (code.isEmpty()) {
+            printError(QStringLiteral("--lang %1: %2").arg(parser.value(langOption), error));
+            return kExitBadInput;
+        }
+        if (!error.isEmpty())
+            printError(error); // a bad saved preference: a warning, the system language is used
+        if (!resect::installTranslations(app, code, &error)) {
+            printError(QStringLiteral("--lang %1: %2").arg(code, error));
+            return kExitBadInput;
+        }
     }
 
     resect::Sample sample = resect::Sample::Polyp;

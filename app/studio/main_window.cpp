@@ -2,6 +2,8 @@
 
 #include "widgets/authoring_panel.h"
 #include "widgets/cut_panel.h"
+#include "widgets/export_runner.h"
+#include "widgets/language.h"
 #include "widgets/quality_panel.h"
 #include "widgets/scenario_document.h"
 #include "widgets/simulation_controller.h"
@@ -120,6 +122,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_cutPanel, &CutPanel::applyFailed, this,
             [this](const QString& message) { showError(tr("The cut was not applied."), message); });
 
+    m_export = new ExportRunner(this);
+    connect(m_export, &ExportRunner::finished, this, &MainWindow::onExportFinished);
+
     m_document->setAutosaveInterval(60'000);
     updateTitle();
     updateRecentMenu();
@@ -149,6 +154,9 @@ void MainWindow::createActions() {
     saveAction->setShortcut(QKeySequence::Save);
     QAction* saveAsAction = file->addAction(tr("Save &as..."), this, &MainWindow::saveAsDialog);
     saveAsAction->setShortcut(QKeySequence::SaveAs);
+    file->addSeparator();
+    QAction* exportAction = file->addAction(tr("&Export for the trainer..."), this, &MainWindow::exportDialog);
+    exportAction->setObjectName(QStringLiteral("exportPackage"));
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
@@ -191,25 +199,22 @@ void MainWindow::createActions() {
     m_showSurface = m_viewMenu->addAction(tr("Show high-resolution &surface"));
     m_showSurface->setCheckable(true);
     m_showSurface->setChecked(false);
-    const auto applyVisibility = [this] {
-        m_viewport->tetMeshActor().actor()->SetVisibility(m_showTets->isChecked());
-        m_viewport->surfaceActor().actor()->SetVisibility(m_showSurface->isChecked());
-        m_viewport->requestRender();
-    };
-    connect(m_showTets, &QAction::toggled, this, applyVisibility);
-    connect(m_showSurface, &QAction::toggled, this, applyVisibility);
+    connect(m_showTets, &QAction::toggled, this, &MainWindow::applyVisibility);
+    connect(m_showSurface, &QAction::toggled, this, &MainWindow::applyVisibility);
     applyVisibility();
     m_viewMenu->addSeparator();
 
     QMenu* language = menuBar()->addMenu(tr("&Language"));
     auto* languages = new QActionGroup(this);
-    const QString chosen = QSettings().value(QStringLiteral("language")).toString();
-    const std::pair<QString, QString> names[] = {{QString(), tr("System default")},
-                                                 {QStringLiteral("en"), QStringLiteral("English")},
-                                                 {QStringLiteral("de"), QStringLiteral("Deutsch")},
-                                                 {QStringLiteral("fr"), QStringLiteral("Français")}};
-    for (const auto& [code, title] : names) {
-        QAction* a = language->addAction(title);
+    const QString chosen = QSettings().value(QString::fromLatin1(kLanguageSettingsKey)).toString();
+    QAction* system = language->addAction(tr("System default"));
+    system->setCheckable(true);
+    system->setChecked(chosen.isEmpty());
+    languages->addAction(system);
+    connect(system, &QAction::triggered, this, [this] { setLanguagePreference(QString()); });
+    for (const QString& code : availableLanguages()) {
+        QAction* a = language->addAction(languageName(code));
+        a->setObjectName(QStringLiteral("language_") + code);
         a->setCheckable(true);
         a->setChecked(code == chosen);
         languages->addAction(a);
@@ -347,6 +352,41 @@ void MainWindow::importAnatomyDialog() {
         showError(tr("Could not import %1.").arg(QFileInfo(path).fileName()), error);
 }
 
+bool MainWindow::exportPackage(const QString& outDir, bool force) {
+    if (m_export->isRunning()) {
+        showError(tr("The scenario was not exported."), tr("An export is already running."));
+        return false;
+    }
+    ExportOptions options;
+    options.force = force;
+    options.scenarioFile = m_document->filePath().toStdString();
+    if (!m_export->start(m_document->scenario(), outDir, options)) {
+        showError(tr("The scenario was not exported."), tr("The export could not be started."));
+        return false;
+    }
+    if (m_errorDialogs)
+        m_export->showProgressDialog(this);
+    statusBar()->showMessage(tr("Exporting to %1...").arg(outDir));
+    return true;
+}
+
+void MainWindow::exportDialog() {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Export for the trainer: choose an empty folder"));
+    if (!dir.isEmpty())
+        exportPackage(dir, false);
+}
+
+void MainWindow::onExportFinished(bool ok, const QString& message, const QStringList& files) {
+    if (ok) {
+        statusBar()->showMessage(tr("Exported %n file(s) to %1", nullptr, int(files.size()))
+                                     .arg(QString::fromStdString(m_export->summary().outDir)),
+                                 10000);
+    } else {
+        showError(tr("The scenario was not exported."), message);
+    }
+    emit exportFinished(ok, message, files);
+}
+
 bool MainWindow::offerRecovery() {
     const QString autosave = m_document->recoverableAutosave();
     if (autosave.isEmpty())
@@ -468,12 +508,19 @@ void MainWindow::refreshView(bool frame) {
     m_viewport->setTetMesh(mesh, frame);
     m_viewport->tetMeshActor().setTetSchemes(state->schemes);
     m_viewport->setSurface(surface, false);
+    applyVisibility();
     m_qualityPanel->meshChanged();
     updateStatus();
     if (frame) {
         m_loadedOnce = true;
         emit meshLoaded();
     }
+}
+
+void MainWindow::applyVisibility() {
+    m_viewport->tetMeshActor().actor()->SetVisibility(m_showTets->isChecked());
+    m_viewport->surfaceActor().actor()->SetVisibility(m_showSurface->isChecked());
+    m_viewport->requestRender();
 }
 
 void MainWindow::updateQualityViews() {
@@ -497,9 +544,9 @@ void MainWindow::updateQualityViews() {
 void MainWindow::setLanguagePreference(const QString& code) {
     QSettings settings;
     if (code.isEmpty())
-        settings.remove(QStringLiteral("language"));
+        settings.remove(QString::fromLatin1(kLanguageSettingsKey));
     else
-        settings.setValue(QStringLiteral("language"), code);
+        settings.setValue(QString::fromLatin1(kLanguageSettingsKey), code);
     statusBar()->showMessage(tr("The language changes when Resect Studio is started again."), 10000);
 }
 

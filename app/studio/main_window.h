@@ -23,6 +23,7 @@ namespace resect {
 
 class AuthoringPanel;
 class CutPanel;
+class ExportRunner;
 class QualityPanel;
 struct TissueState;
 class TetMesh;
@@ -50,6 +51,12 @@ public:
     /// Saves to `path` (no dialog). False, with an error shown, if not saved.
     bool saveAs(const QString& path);
 
+    /// Exports the document for the trainer into `outDir` (scenario/trainer_export.h) on a
+    /// worker thread with a progress dialog (when dialogs are on); exportFinished() reports.
+    /// False if it could not start.
+    bool exportPackage(const QString& outDir, bool force = false);
+    ExportRunner& exportRunner() { return *m_export; }
+
     bool isLoading() const;
     VtkViewport* viewport() const { return m_viewport; }
     ScenarioDocument& document() { return *m_document; }
@@ -75,6 +82,8 @@ signals:
     void meshLoaded();
     /// Loading failed; `message` names the input and what is wrong.
     void loadFailed(const QString& message);
+    /// An export ended; `files` are the package's files (absolute paths) when it succeeded.
+    void exportFinished(bool ok, const QString& message, const QStringList& files);
     /// An error was reported to the user (shown in a box unless dialogs are off).
     void errorReported(const QString& message);
 
@@ -89,6 +98,8 @@ private:
     void openFileDialog();
     void importAnatomyDialog();
     void saveAsDialog();
+    void exportDialog();
+    void onExportFinished(bool ok, const QString& message, const QStringList& files);
     void newFromSample(const QString& name);
     void showError(const QString& title, const QString& message);
     void updateTitle();
@@ -98,6 +109,8 @@ private:
     void onBaseChanged();
     void refreshView(bool frame);
     void updateQualityViews();
+    /// The View menu's choice of tet mesh and high-resolution surface.
+    void applyVisibility();
     void setLanguagePreference(const QString& code);
 
     ScenarioDocument* m_document = nullptr;
@@ -113,6 +126,7 @@ private:
     /// state's, or the simulation's).
     std::shared_ptr<const TissueState> m_shownState;
     const TetMesh* m_shownMesh = nullptr;
+    ExportRunner* m_export = nullptr;
     QLabel* m_statusLabel = nullptr;
     QProgressDialog* m_progress = nullptr;
     QMenu* m_recentMenu = nullptr;

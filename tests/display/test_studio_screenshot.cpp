@@ -71,11 +71,11 @@ QProcessEnvironment environmentWithPlatform(const QString& platform) {
     return env;
 }
 
-/// The 3-D view's part of the window: left of the docks, below the menu bar, above the
-/// status bar (the window is 1280 x 800 with the panels docked on the right).
+/// The 3-D view's part of the window: between the authoring dock on the left and the
+/// panels on the right, below the menu bar, above the status bar (1280 x 800 window).
 QRect viewRegion(const QImage& image) {
-    return QRect(int(0.03 * image.width()), int(0.1 * image.height()), int(0.5 * image.width()),
-                 int(0.78 * image.height()));
+    return QRect(int(0.25 * image.width()), int(0.06 * image.height()), int(0.40 * image.width()),
+                 int(0.86 * image.height()));
 }
 
 /// Pixels of the overlay's colour scale (hue 0 red .. 120 green), by hue band.
@@ -139,12 +139,11 @@ void TestStudioScreenshot::rendersSampleUnderXvfb() {
     const QString png = dir + QStringLiteral("/studio_%1.png").arg(sample);
     QFile::remove(png);
 
-    const RunResult r =
-        run(xvfbRun,
-            {QStringLiteral("-a"), QStringLiteral("-s"), QStringLiteral("-screen 0 1280x1024x24"),
-             QStringLiteral(RESECT_STUDIO_EXE)} +
-                source + QStringList{QStringLiteral("--screenshot"), png},
-            environmentWithPlatform(QStringLiteral("xcb")));
+    const QStringList arguments = QStringList{QStringLiteral("-a"), QStringLiteral("-s"),
+                                              QStringLiteral("-screen 0 1280x1024x24"),
+                                              QStringLiteral(RESECT_STUDIO_EXE)} +
+                                  source + QStringList{QStringLiteral("--screenshot"), png};
+    const RunResult r = run(xvfbRun, arguments, environmentWithPlatform(QStringLiteral("xcb")));
     QVERIFY2(r.finished && r.exitCode == 0, qPrintable(describe(r)));
 
     QImage image;
