@@ -43,11 +43,12 @@ public:
     /// Cancels a running study and waits for it.
     ~AccuracyPanel() override;
 
-    /// What the study cuts: the tissue (e.g. TissueSession::current()->mesh, shared without a
-    /// copy through an aliasing shared_ptr to the TissueState), the sweep (the scenario's
-    /// first cut, or loopScoopSweep when it has none), the name shown in the rows and,
-    /// optionally, the embedded surface bound to the mesh (its cut is timed as surface_ms).
-    /// Takes effect at the next Run; a running study keeps its own tissue.
+    /// What the study cuts: the tissue (e.g. TissueSession::base()->mesh, the uncut tissue,
+    /// which current() is too when the scenario has no cut yet; shared without a copy through
+    /// an aliasing shared_ptr to the TissueState), the sweep (the scenario's first cut, or
+    /// loopScoopSweep when it has none), the name shown in the rows and, optionally, the
+    /// embedded surface bound to the mesh (its cut is timed as surface_ms). Takes effect at
+    /// the next Run; a running study keeps its own tissue; the rows shown stay.
     void setTissue(std::shared_ptr<const TetMesh> mesh, SweepSurface sweep, const QString& name,
                    std::shared_ptr<const EmbeddedSurface> surface = {});
     /// As above from a copy of the mesh.
