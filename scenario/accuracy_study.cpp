@@ -292,6 +292,26 @@ Status measureVariant(const StudyConfig& config, const StudyMesh& meshInfo, cons
 
 } // namespace
 
+namespace {
+
+/// Every variant of the configuration on one loaded mesh (masses computed, `surface` bound to
+/// it or empty) with its sweep; one ticker unit per row.
+Status studyMesh(const StudyConfig& config, const StudyMesh& meshInfo, const TetMesh& base,
+                 const EmbeddedSurface& surface, const SweepSurface& sweep, const std::vector<Variant>& variants,
+                 Ticker& ticker, std::vector<StudyRow>& rows) {
+    const double baseMinRatio = minRadiusRatio(base);
+    for (const Variant& v : variants) {
+        StudyRow row;
+        if (Status s = measureVariant(config, meshInfo, base, surface, sweep, baseMinRatio, v, ticker, row); !s.ok())
+            return s;
+        rows.push_back(std::move(row));
+        ticker.advance();
+    }
+    return Status::success();
+}
+
+} // namespace
+
 Status runAccuracyStudy(const StudyConfig& config, std::vector<StudyRow>& rows, const StudyProgress& progress) {
     rows.clear();
     if (Status s = validate(config); !s.ok())
@@ -315,16 +335,35 @@ Status runAccuracyStudy(const StudyConfig& config, std::vector<StudyRow>& rows, 
             return Status::error(m.name + ": embedded surface: " + s.message());
         surface.update(base);
         const SweepSurface sweep = loopScoopSweep(base, m.cutHeight);
-        const double baseMinRatio = minRadiusRatio(base);
         ticker.advance();
-        for (const Variant& v : variants) {
-            StudyRow row;
-            if (Status s = measureVariant(config, m, base, surface, sweep, baseMinRatio, v, ticker, row); !s.ok())
-                return s;
-            rows.push_back(std::move(row));
-            ticker.advance();
-        }
+        if (Status s = studyMesh(config, m, base, surface, sweep, variants, ticker, rows); !s.ok())
+            return s;
     }
+    ticker.report("done");
+    return Status::success();
+}
+
+Status runAccuracyStudyOn(const TetMesh& mesh, const SweepSurface& sweep, const std::string& name,
+                          const StudyConfig& config, std::vector<StudyRow>& rows, const StudyProgress& progress,
+                          const EmbeddedSurface* surface) {
+    rows.clear();
+    if (Status s = validate(config); !s.ok())
+        return s;
+    if (mesh.tetCount() == 0)
+        return Status::error(name + ": the mesh has no tets");
+    const std::vector<Variant> variants = variantsOf(config);
+    // Units: one for preparing the mesh and one per row.
+    Ticker ticker(progress, static_cast<double>(variants.size() + 1));
+    if (!ticker.report(name + ": preparing"))
+        return cancelled();
+    StudyMesh info;
+    info.name = name;
+    TetMesh base = mesh;
+    computeLumpedMasses(base, config.material.density);
+    const EmbeddedSurface none;
+    ticker.advance();
+    if (Status s = studyMesh(config, info, base, surface ? *surface : none, sweep, variants, ticker, rows); !s.ok())
+        return s;
     ticker.report("done");
     return Status::success();
 }

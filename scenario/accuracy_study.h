@@ -7,7 +7,8 @@
 //    combination of snapping (on, off) and relaxation steps, for every cut-node threshold d.
 //    One StudyRow per combination: how far the cut faces lie from the sweep (accuracy), what
 //    the cut leaves behind (tets, worst element, stable time step) and what it costs (cut and
-//    embedded-surface time, simulation time per simulated second).
+//    embedded-surface time, simulation time per simulated second). runAccuracyStudyOn does
+//    the same on a given mesh and sweep (the open scenario's tissue and cut).
 //  * runScalingStudy: the same local cut (a 4 x 4 cell patch) on Kuhn box meshes from about
 //    10k to about 1M tets, the cost of one explicit simulation step per tet on one and two
 //    threads and of the embedded-surface update per vertex.
@@ -28,6 +29,10 @@
 #include <vector>
 
 namespace resect {
+
+class EmbeddedSurface;
+class SweepSurface;
+class TetMesh;
 
 enum class StudyMethod { Subdivision, HybridStandard, HybridEnhanced };
 /// "subdivision", "hybrid-standard", "hybrid-enhanced".
@@ -128,6 +133,16 @@ using StudyProgress = std::function<bool(double fraction, const std::string& sta
 
 Status runAccuracyStudy(const StudyConfig& config, std::vector<StudyRow>& rows,
                         const StudyProgress& progress = {});
+/// The accuracy study on a given tissue and cut (the studio's open scenario) instead of the
+/// samples: the rows of runAccuracyStudy for every method, d, snapping and relaxation of
+/// `config` (config.meshes is ignored), cutting copies of `mesh` with `sweep`; every row's
+/// `mesh` is `name`. Masses are recomputed with config.material (as for the samples), so the
+/// rows compare with runAccuracyStudy's. `surface`, if given and not empty, is the embedded
+/// surface bound to `mesh` and is cut along (surfaceMs); otherwise surfaceMs and
+/// surfaceTriangles are 0. Progress and cancel as in runAccuracyStudy.
+Status runAccuracyStudyOn(const TetMesh& mesh, const SweepSurface& sweep, const std::string& name,
+                          const StudyConfig& config, std::vector<StudyRow>& rows,
+                          const StudyProgress& progress = {}, const EmbeddedSurface* surface = nullptr);
 Status runScalingStudy(const StudyConfig& config, std::vector<ScalingRow>& rows,
                        const StudyProgress& progress = {});
 

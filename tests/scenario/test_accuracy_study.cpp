@@ -3,6 +3,10 @@
 // times are only checked to be finite and non-negative.
 #include "scenario/accuracy_study.h"
 
+#include "core/embed/embedded_surface.h"
+#include "core/mesh/box_mesh.h"
+#include "core/sweep/sweep_surface.h"
+
 #include <QTest>
 
 #include <cmath>
@@ -211,6 +215,57 @@ private slots:
         QVERIFY(!t.ok());
         QCOMPARE(QString::fromStdString(t.message()), QString("cancelled"));
         QVERIFY(scaling.empty());
+    }
+
+    void studyOnAGivenMeshAndSweep() {
+        // runAccuracyStudyOn (the studio's open scenario): a 4^3 box cut through by a slanted
+        // plane, with and without an embedded surface (the myoma scaled into the box).
+        const int n = 4;
+        const TetMesh box = makeBoxTetMesh(Vec3::Zero(), Vec3::Constant(n), n, n, n);
+        SweepSurface sweep;
+        QVERIFY(SweepSurface::fromStartEnd({Vec3(-1, -1, 1.63), Vec3(n + 1, -1, 1.71)},
+                                           {Vec3(-1, n + 1, 1.79), Vec3(n + 1, n + 1, 1.87)}, sweep)
+                    .ok());
+        StudyConfig c = m_config;
+        c.dValues = {0.0, 0.3};
+        c.meshes.clear();  // ignored
+        std::vector<StudyRow> rows;
+        double last = -1;
+        Status s = runAccuracyStudyOn(box, sweep, "box", c, rows, [&](double f, const std::string&) {
+            last = f;
+            return true;
+        });
+        QVERIFY2(s.ok(), s.message().c_str());
+        QCOMPARE(last, 1.0);
+        QCOMPARE(rows.size(), c.dValues.size() * (1 + 2 * c.snapOptions.size() * c.relaxSteps.size()));
+        for (const StudyRow& r : rows) {
+            QCOMPARE(QString::fromStdString(r.mesh), QString("box"));
+            QCOMPARE(r.meshTets, box.tetCount());
+            QVERIFY(r.tets >= r.meshTets && r.cutSurfaceNodes > 0);
+            QCOMPARE(r.surfaceTriangles, 0);
+            QVERIFY(std::isfinite(r.stableDt) && r.stableDt > 0 && r.simMsPerSecond > 0);
+            if (r.method == "subdivision" || r.d == 0)
+                QVERIFY2(r.sweepErrorMax < 1e-6, qPrintable(QString::number(r.sweepErrorMax)));
+            else if (!r.snap)
+                QVERIFY(r.sweepErrorMax <= r.d + 1e-9);
+        }
+
+        TriangleSurface inner = sampleSurface(Sample::Myoma, 0.01);
+        const auto [lo, hi] = boundingBox(inner.positions);
+        for (Vec3& p : inner.positions)
+            p = Vec3::Constant(0.5 * n) + (0.8 * n / (hi - lo).maxCoeff()) * (p - 0.5 * (lo + hi));
+        EmbeddedSurface embedded;
+        QVERIFY(embedded.bind(box, inner).ok());
+        s = runAccuracyStudyOn(box, sweep, "box", c, rows, {}, &embedded);
+        QVERIFY2(s.ok(), s.message().c_str());
+        for (const StudyRow& r : rows)
+            QCOMPARE(r.surfaceTriangles, int(inner.triangles.size()));
+
+        s = runAccuracyStudyOn(box, sweep, "box", c, rows, [](double, const std::string&) { return false; });
+        QCOMPARE(QString::fromStdString(s.message()), QString("cancelled"));
+        QVERIFY(rows.empty());
+        c.dValues = {0.9};
+        QVERIFY(!runAccuracyStudyOn(box, sweep, "box", c, rows).ok());
     }
 
     void badConfigurationIsRefused() {

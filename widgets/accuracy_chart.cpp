@@ -1,0 +1,429 @@
+#include "widgets/accuracy_chart.h"
+
+#include <QHelpEvent>
+#include <QLocale>
+#include <QMouseEvent>
+#include <QPaintEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QToolTip>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace resect {
+
+namespace {
+
+constexpr double kPickRadius = 6.0; ///< px: how near a click must be to a point
+constexpr double kMarkerSize = 4.5; ///< px: half the marker's width
+constexpr double kLeft = 64, kRight = 16,
+                 kBottom = 44;     ///< px: margins around the axes (top: the legend)
+constexpr double kLegendLine = 18; ///< px: one line of the legend
+constexpr double kSymbolWidth = 2 * kMarkerSize + 5; ///< px: a legend symbol and its gap
+
+const char* const kKnownMethods[] = {"subdivision", "hybrid-standard", "hybrid-enhanced"};
+
+/// The smallest of 1, 2, 5 times a power of ten that is at least `v` (> 0).
+double niceStep(double v) {
+    const double p = std::pow(10.0, std::floor(std::log10(v)));
+    for (double m : {1.0, 2.0, 5.0, 10.0})
+        if (m * p >= v * (1 - 1e-9))
+            return m * p;
+    return 10 * p;
+}
+
+void drawMarker(QPainter& painter, const std::string& method, QPointF c, double s) {
+    if (method == "subdivision") {
+        painter.drawRect(QRectF(c.x() - s, c.y() - s, 2 * s, 2 * s));
+    } else if (method == "hybrid-standard") {
+        const QPointF tri[3] = {{c.x(), c.y() - 1.2 * s},
+                                {c.x() - 1.1 * s, c.y() + 0.9 * s},
+                                {c.x() + 1.1 * s, c.y() + 0.9 * s}};
+        painter.drawPolygon(tri, 3);
+    } else if (method == "hybrid-enhanced") {
+        painter.drawEllipse(c, s, s);
+    } else {
+        const QPointF diamond[4] = {{c.x(), c.y() - 1.3 * s},
+                                    {c.x() + 1.3 * s, c.y()},
+                                    {c.x(), c.y() + 1.3 * s},
+                                    {c.x() - 1.3 * s, c.y()}};
+        painter.drawPolygon(diamond, 4);
+    }
+}
+
+} // namespace
+
+AccuracyChart::AccuracyChart(QWidget* parent) : QWidget(parent) {
+    setObjectName(QStringLiteral("accuracyChart"));
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+    setMouseTracking(true);
+}
+
+void AccuracyChart::setRows(std::vector<StudyRow> rows) {
+    m_rows = std::move(rows);
+    m_selected = -1;
+    update();
+}
+
+void AccuracyChart::setCostAxis(CostAxis axis) {
+    m_axis = axis;
+    update();
+}
+
+double AccuracyChart::cost(const StudyRow& row) const {
+    return m_axis == CostAxis::CutMs ? row.cutMs : row.simMsPerSecond;
+}
+
+void AccuracyChart::setSelectedRow(int row) {
+    m_selected = row >= 0 && row < static_cast<int>(m_rows.size()) ? row : -1;
+    update();
+}
+
+QString AccuracyChart::methodLabel(const std::string& method) {
+    if (method == "subdivision")
+        return tr("Subdivision");
+    if (method == "hybrid-standard")
+        return tr("Hybrid, standard triangulation");
+    if (method == "hybrid-enhanced")
+        return tr("Hybrid, enhanced triangulation");
+    return QString::fromStdString(method);
+}
+
+QColor AccuracyChart::methodColour(const std::string& method) {
+    if (method == "subdivision")
+        return QColor(200, 70, 60);
+    if (method == "hybrid-standard")
+        return QColor(60, 120, 200);
+    if (method == "hybrid-enhanced")
+        return QColor(40, 160, 90);
+    return QColor(130, 130, 130);
+}
+
+std::vector<std::string> AccuracyChart::methods() const {
+    std::vector<std::string> out;
+    for (const char* m : kKnownMethods)
+        if (std::any_of(m_rows.begin(), m_rows.end(),
+                        [&](const StudyRow& r) { return r.method == m; }))
+            out.emplace_back(m);
+    for (const StudyRow& r : m_rows)
+        if (std::find(out.begin(), out.end(), r.method) == out.end())
+            out.push_back(r.method);
+    return out;
+}
+
+std::vector<AccuracyChart::LegendItem> AccuracyChart::legendLayout(double& height) const {
+    std::vector<LegendItem> items;
+    for (const std::string& method : methods())
+        items.push_back({method, methodLabel(method), {}});
+    if (!items.empty())
+        items.push_back({std::string(), tr("Pareto front"), {}});
+    const QFontMetricsF fm(font());
+    const double right = std::max(kLeft + 100, width() - kRight);
+    double x = kLeft, y = 4 + kLegendLine / 2;
+    for (LegendItem& item : items) {
+        const double w = kSymbolWidth + fm.horizontalAdvance(item.label) + 16;
+        if (x > kLeft && x + w > right) {
+            x = kLeft;
+            y += kLegendLine;
+        }
+        item.position = QPointF(x, y);
+        x += w;
+    }
+    height = y + kLegendLine / 2 + 6;
+    return items;
+}
+
+QRectF AccuracyChart::plotRect() const {
+    double top = 0;
+    legendLayout(top);
+    top = std::max(top, 30.0);
+    return QRectF(kLeft, top, std::max(10.0, width() - kLeft - kRight),
+                  std::max(10.0, height() - top - kBottom));
+}
+
+double AccuracyChart::logCost(const StudyRow& row) const {
+    const double c = cost(row);
+    return std::isfinite(c) && c > 0 ? std::log10(c) : std::numeric_limits<double>::quiet_NaN();
+}
+
+AccuracyChart::Ranges AccuracyChart::ranges() const {
+    Ranges r;
+    double xLo = std::numeric_limits<double>::infinity(), xHi = -xLo, yHi = 0;
+    for (const StudyRow& row : m_rows) {
+        const double x = logCost(row);
+        if (std::isfinite(x)) {
+            xLo = std::min(xLo, x);
+            xHi = std::max(xHi, x);
+        }
+        if (std::isfinite(row.sweepErrorMax))
+            yHi = std::max(yHi, row.sweepErrorMax);
+    }
+    if (!(xLo <= xHi)) {
+        xLo = 0;
+        xHi = 1;
+    }
+    // At least 0.4 decades wide, with a margin of a tenth of a decade on either side.
+    const double mid = 0.5 * (xLo + xHi);
+    const double half = std::max(0.2, 0.5 * (xHi - xLo) + 0.1);
+    r.xLo = mid - half;
+    r.xHi = mid + half;
+    const double step = niceStep(std::max(0.01, 1.1 * yHi) / 5);
+    r.yHi = step * std::ceil(std::max(0.01, 1.1 * yHi) / step - 1e-9);
+    r.yLo = -0.03 * r.yHi; // exact cuts (error 0) just above the axis
+    return r;
+}
+
+QPointF AccuracyChart::toPixel(double x, double y, const Ranges& r, const QRectF& plot) const {
+    if (!std::isfinite(x))
+        x = r.xLo; // no cost measured: on the left edge
+    if (!std::isfinite(y))
+        y = r.yHi; // no error measured: on the top edge
+    const double fx = (x - r.xLo) / (r.xHi - r.xLo);
+    const double fy = (std::clamp(y, r.yLo, r.yHi) - r.yLo) / (r.yHi - r.yLo);
+    return {plot.left() + fx * plot.width(), plot.bottom() - fy * plot.height()};
+}
+
+QPointF AccuracyChart::pointPosition(int row) const {
+    if (row < 0 || row >= static_cast<int>(m_rows.size()))
+        return {-1, -1};
+    const StudyRow& r = m_rows[static_cast<std::size_t>(row)];
+    return toPixel(logCost(r), r.sweepErrorMax, ranges(), plotRect());
+}
+
+int AccuracyChart::rowAt(QPointF pixel) const {
+    const Ranges r = ranges();
+    const QRectF plot = plotRect();
+    int best = -1;
+    double bestDist = kPickRadius;
+    for (int i = 0; i < static_cast<int>(m_rows.size()); ++i) {
+        const StudyRow& row = m_rows[static_cast<std::size_t>(i)];
+        const QPointF p = toPixel(logCost(row), row.sweepErrorMax, r, plot);
+        const double dist = std::hypot(p.x() - pixel.x(), p.y() - pixel.y());
+        if (dist <= bestDist && (best < 0 || dist < bestDist)) {
+            best = i;
+            bestDist = dist;
+        }
+    }
+    return best;
+}
+
+std::vector<int> AccuracyChart::paretoFront(const std::string& method) const {
+    std::vector<int> rows;
+    for (int i = 0; i < static_cast<int>(m_rows.size()); ++i) {
+        const StudyRow& r = m_rows[static_cast<std::size_t>(i)];
+        if (r.method == method && std::isfinite(cost(r)) && std::isfinite(r.sweepErrorMax))
+            rows.push_back(i);
+    }
+    std::sort(rows.begin(), rows.end(), [&](int a, int b) {
+        const StudyRow& ra = m_rows[static_cast<std::size_t>(a)];
+        const StudyRow& rb = m_rows[static_cast<std::size_t>(b)];
+        const double ca = cost(ra), cb = cost(rb);
+        return ca != cb ? ca < cb : ra.sweepErrorMax < rb.sweepErrorMax;
+    });
+    // By increasing cost, a row is on the front if it is more accurate than every cheaper one.
+    std::vector<int> front;
+    double best = std::numeric_limits<double>::infinity();
+    for (int i : rows) {
+        const double e = m_rows[static_cast<std::size_t>(i)].sweepErrorMax;
+        if (e < best) {
+            front.push_back(i);
+            best = e;
+        }
+    }
+    return front;
+}
+
+QString AccuracyChart::rowToolTip(int row) const {
+    if (row < 0 || row >= static_cast<int>(m_rows.size()))
+        return {};
+    const StudyRow& r = m_rows[static_cast<std::size_t>(row)];
+    const QLocale locale;
+    const auto num = [&](double v, int digits = 3) { return locale.toString(v, 'g', digits); };
+    QStringList lines;
+    lines << tr("%1 on %2").arg(methodLabel(r.method), QString::fromStdString(r.mesh));
+    lines << tr("d = %1, snapping %2, %n relaxation step(s)", nullptr, r.relaxSteps)
+                 .arg(num(r.d), r.snap ? tr("on") : tr("off"));
+    lines << tr("Cut-face error: max %1, mean %2 mean edge lengths")
+                 .arg(num(r.sweepErrorMax), num(r.sweepErrorMean));
+    lines << tr("Tets: %1 (%2 added); worst radius ratio %3")
+                 .arg(r.tets)
+                 .arg(r.addedTets)
+                 .arg(num(r.minRadiusRatio));
+    lines << tr("Stable time step: %1 s").arg(num(r.stableDt));
+    lines << tr("Cut: %1 ms; simulation: %2 ms per simulated second")
+                 .arg(num(r.cutMs), num(r.simMsPerSecond));
+    return lines.join(QLatin1Char('\n'));
+}
+
+QSize AccuracyChart::sizeHint() const {
+    return {480, 320};
+}
+
+QSize AccuracyChart::minimumSizeHint() const {
+    return {240, 160};
+}
+
+void AccuracyChart::paintEvent(QPaintEvent*) {
+    QPainter painter(this);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.fillRect(rect(), palette().base());
+    const QRectF plot = plotRect();
+    const Ranges r = ranges();
+    const QLocale locale;
+    const QColor text = palette().color(QPalette::Text);
+    const QColor grid = palette().color(QPalette::Mid);
+    const QFontMetricsF fm(font());
+
+    // Grid, ticks and tick labels. x: decades, with 2 and 5 between when few decades show.
+    painter.setPen(QPen(grid, 0, Qt::DotLine));
+    std::vector<double> xTicks;
+    const bool fine = r.xHi - r.xLo <= 2.5;
+    for (int k = static_cast<int>(std::floor(r.xLo)); k <= static_cast<int>(std::ceil(r.xHi)); ++k)
+        for (double m : fine ? std::vector<double>{1, 2, 5} : std::vector<double>{1}) {
+            const double x = k + std::log10(m);
+            if (x >= r.xLo && x <= r.xHi)
+                xTicks.push_back(x);
+        }
+    for (double x : xTicks) {
+        const double px = toPixel(x, r.yLo, r, plot).x();
+        painter.setPen(QPen(grid, 0, Qt::DotLine));
+        painter.drawLine(QPointF(px, plot.top()), QPointF(px, plot.bottom()));
+        painter.setPen(text);
+        painter.drawLine(QPointF(px, plot.bottom()), QPointF(px, plot.bottom() + 4));
+        const QString label = locale.toString(std::pow(10.0, x), 'g', 3);
+        painter.drawText(QRectF(px - 40, plot.bottom() + 5, 80, fm.height()),
+                         Qt::AlignHCenter | Qt::AlignTop, label);
+    }
+    const double yStep = niceStep(r.yHi / 5);
+    for (double y = 0; y <= r.yHi + 1e-9 * yStep; y += yStep) {
+        const double py = toPixel(r.xLo, y, r, plot).y();
+        painter.setPen(QPen(grid, 0, Qt::DotLine));
+        painter.drawLine(QPointF(plot.left(), py), QPointF(plot.right(), py));
+        painter.setPen(text);
+        painter.drawLine(QPointF(plot.left() - 4, py), QPointF(plot.left(), py));
+        painter.drawText(QRectF(0, py - fm.height() / 2, plot.left() - 6, fm.height()),
+                         Qt::AlignRight | Qt::AlignVCenter, locale.toString(y, 'g', 3));
+    }
+
+    // Axes and their titles.
+    painter.setPen(text);
+    painter.drawLine(plot.bottomLeft(), plot.bottomRight());
+    painter.drawLine(plot.bottomLeft(), plot.topLeft());
+    const QString xTitle = m_axis == CostAxis::CutMs
+                               ? tr("Cut time (ms, log scale)")
+                               : tr("Simulation cost (ms per simulated second, log scale)");
+    painter.drawText(QRectF(plot.left(), height() - fm.height() - 2, plot.width(), fm.height()),
+                     Qt::AlignHCenter, xTitle);
+    painter.save();
+    painter.translate(fm.height() / 2 + 2, plot.center().y());
+    painter.rotate(-90);
+    painter.drawText(QRectF(-plot.height() / 2, -fm.height() / 2, plot.height(), fm.height()),
+                     Qt::AlignCenter, tr("Cut-face error, max (mean edge lengths)"));
+    painter.restore();
+
+    if (m_rows.empty()) {
+        painter.setPen(palette().color(QPalette::PlaceholderText));
+        painter.drawText(plot, Qt::AlignCenter | Qt::TextWordWrap,
+                         tr("Run the study to see what accuracy costs."));
+    }
+
+    const std::vector<std::string> present = methods();
+    // Pareto fronts, then the points on top.
+    painter.setClipRect(
+        plot.adjusted(-kMarkerSize - 2, -kMarkerSize - 2, kMarkerSize + 2, kMarkerSize + 2));
+    for (const std::string& method : present) {
+        const std::vector<int> front = paretoFront(method);
+        if (front.size() < 2)
+            continue;
+        QPainterPath path;
+        for (std::size_t i = 0; i < front.size(); ++i) {
+            const StudyRow& row = m_rows[static_cast<std::size_t>(front[i])];
+            const QPointF p = toPixel(logCost(row), row.sweepErrorMax, r, plot);
+            if (i == 0)
+                path.moveTo(p);
+            else
+                path.lineTo(p);
+        }
+        painter.setPen(QPen(methodColour(method), 1.5));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawPath(path);
+    }
+    for (std::size_t i = 0; i < m_rows.size(); ++i) {
+        const StudyRow& row = m_rows[i];
+        const QColor c = methodColour(row.method);
+        painter.setPen(QPen(c.darker(140), 1));
+        painter.setBrush(QColor(c.red(), c.green(), c.blue(), 170));
+        drawMarker(painter, row.method, toPixel(logCost(row), row.sweepErrorMax, r, plot),
+                   kMarkerSize);
+    }
+    if (m_selected >= 0) {
+        painter.setPen(QPen(text, 2));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawEllipse(pointPosition(m_selected), kMarkerSize + 4, kMarkerSize + 4);
+    }
+    painter.setClipping(false);
+
+    // Legend along the top: one marker per method present, then the front's line.
+    double legendHeight = 0;
+    for (const LegendItem& item : legendLayout(legendHeight)) {
+        const QPointF p = item.position;
+        if (item.method.empty()) {
+            painter.setPen(QPen(text, 1.5));
+            painter.drawLine(QPointF(p.x() - 4, p.y()), QPointF(p.x() + kSymbolWidth - 2, p.y()));
+        } else {
+            const QColor c = methodColour(item.method);
+            painter.setPen(QPen(c.darker(140), 1));
+            painter.setBrush(QColor(c.red(), c.green(), c.blue(), 170));
+            drawMarker(painter, item.method, QPointF(p.x() + kMarkerSize, p.y()), kMarkerSize);
+        }
+        painter.setPen(text);
+        painter.drawText(
+            QRectF(p.x() + kSymbolWidth + 2, p.y() - fm.height() / 2, width(), fm.height()),
+            Qt::AlignLeft | Qt::AlignVCenter, item.label);
+    }
+}
+
+void AccuracyChart::mousePressEvent(QMouseEvent* event) {
+    if (event->button() != Qt::LeftButton) {
+        QWidget::mousePressEvent(event);
+        return;
+    }
+    const int row = rowAt(event->position());
+    if (row >= 0) {
+        setSelectedRow(row);
+        emit rowClicked(row);
+    }
+    event->accept();
+}
+
+void AccuracyChart::mouseDoubleClickEvent(QMouseEvent* event) {
+    if (event->button() != Qt::LeftButton) {
+        QWidget::mouseDoubleClickEvent(event);
+        return;
+    }
+    const int row = rowAt(event->position());
+    if (row >= 0) {
+        setSelectedRow(row);
+        emit rowDoubleClicked(row);
+    }
+    event->accept();
+}
+
+bool AccuracyChart::event(QEvent* event) {
+    if (event->type() == QEvent::ToolTip) {
+        auto* help = static_cast<QHelpEvent*>(event);
+        const int row = rowAt(help->pos());
+        if (row >= 0) {
+            QToolTip::showText(help->globalPos(), rowToolTip(row), this);
+        } else {
+            QToolTip::hideText();
+            event->ignore();
+        }
+        return true;
+    }
+    return QWidget::event(event);
+}
+
+} // namespace resect
