@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "widgets/accuracy_panel.h"
 #include "widgets/authoring_panel.h"
 #include "widgets/cut_panel.h"
 #include "widgets/export_runner.h"
@@ -12,6 +13,9 @@
 #include "widgets/sweep_edit_tool.h"
 #include "widgets/tissue_session.h"
 #include "widgets/vtk_viewport.h"
+
+#include "scenario/cut_study.h"
+#include "scenario/scenario_sweeps.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -65,6 +69,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_cutPanel = new CutPanel(*m_document, *m_session);
     m_simulationPanel = new SimulationPanel(*m_document, *m_simulation);
     m_authoringPanel = new AuthoringPanel(m_viewport);
+    m_accuracyPanel = new AccuracyPanel;
     m_qualityPanel = new QualityPanel;
     m_qualityPanel->attach(m_viewport);
     // A picked tet is inspected in the mesh on show (the preview, the simulated or the
@@ -119,6 +124,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         else
             m_authoringPanel->clearPickSurface();
     });
+    // Accuracy vs time: the study runs on the uncut tissue with the scenario's first cut (or
+    // a loop scoop through its upper part); a chosen point becomes the cut settings.
+    connect(m_session, &TissueSession::baseChanged, this, &MainWindow::updateAccuracyPanel);
+    connect(m_document, &ScenarioDocument::strokesChanged, this, &MainWindow::updateAccuracyPanel);
+    connect(m_document, &ScenarioDocument::sweepsChanged, this, &MainWindow::updateAccuracyPanel);
+    connect(m_document, &ScenarioDocument::cutSettingsChanged, this,
+            [this] { m_accuracyPanel->setBaseCutSettings(m_document->scenario().cut); });
+    connect(m_accuracyPanel, &AccuracyPanel::adoptRequested, m_document, &ScenarioDocument::setCutSettings);
     connect(m_cutPanel, &CutPanel::applyFailed, this,
             [this](const QString& message) { showError(tr("The cut was not applied."), message); });
 
@@ -229,6 +242,11 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::RightDockWidgetArea, simDock);
     tabifyDockWidget(cutDock, simDock);
     cutDock->raise();
+    QDockWidget* accuracyDock =
+        makeDock(tr("Accuracy vs time"), QStringLiteral("accuracyDock"), m_accuracyPanel, this);
+    addDockWidget(Qt::RightDockWidgetArea, accuracyDock);
+    tabifyDockWidget(simDock, accuracyDock);
+    m_viewMenu->addAction(accuracyDock->toggleViewAction());
     QDockWidget* qualityDock = makeDock(tr("Quality"), QStringLiteral("qualityDock"), m_qualityPanel, this);
     addDockWidget(Qt::RightDockWidgetArea, qualityDock);
     tabifyDockWidget(simDock, qualityDock);
@@ -515,6 +533,25 @@ void MainWindow::refreshView(bool frame) {
         m_loadedOnce = true;
         emit meshLoaded();
     }
+}
+
+void MainWindow::updateAccuracyPanel() {
+    const auto base = m_session->base();
+    if (!base) {
+        m_accuracyPanel->clearTissue();
+        return;
+    }
+    const Scenario& scenario = m_document->scenario();
+    m_accuracyPanel->setBaseCutSettings(scenario.cut);
+    std::vector<ScenarioCut> cuts;
+    SweepSurface sweep;
+    if (scenarioCuts(scenario, cuts).ok() && !cuts.empty())
+        sweep = cuts.front().sweep;
+    else
+        sweep = loopScoopSweep(base->mesh, 0.6);
+    // Shares the session's immutable state without copying it.
+    m_accuracyPanel->setTissue(std::shared_ptr<const TetMesh>(base, &base->mesh), std::move(sweep),
+                               base->tissueName, std::shared_ptr<const EmbeddedSurface>(base, &base->surface));
 }
 
 void MainWindow::applyVisibility() {

@@ -21,6 +21,7 @@ class QProgressDialog;
 
 namespace resect {
 
+class AccuracyPanel;
 class AuthoringPanel;
 class CutPanel;
 class ExportRunner;
@@ -66,6 +67,7 @@ public:
     SimulationPanel* simulationPanel() const { return m_simulationPanel; }
     AuthoringPanel* authoringPanel() const { return m_authoringPanel; }
     QualityPanel* qualityPanel() const { return m_qualityPanel; }
+    AccuracyPanel* accuracyPanel() const { return m_accuracyPanel; }
 
     /// Whether errors are shown in message boxes (default) or only signalled (tests, the
     /// command line's --screenshot).
@@ -111,6 +113,7 @@ private:
     void updateQualityViews();
     /// The View menu's choice of tet mesh and high-resolution surface.
     void applyVisibility();
+    void updateAccuracyPanel();
     void setLanguagePreference(const QString& code);
 
     ScenarioDocument* m_document = nullptr;
@@ -122,6 +125,7 @@ private:
     SimulationPanel* m_simulationPanel = nullptr;
     AuthoringPanel* m_authoringPanel = nullptr;
     QualityPanel* m_qualityPanel = nullptr;
+    AccuracyPanel* m_accuracyPanel = nullptr;
     /// The state whose mesh is on show (kept alive while shown) and the mesh itself (the
     /// state's, or the simulation's).
     std::shared_ptr<const TissueState> m_shownState;

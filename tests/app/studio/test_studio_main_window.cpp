@@ -4,7 +4,11 @@
 
 #include "main_window.h"
 
+#include "widgets/accuracy_panel.h"
 #include "widgets/authoring_panel.h"
+#include "widgets/language.h"
+#include "widgets/quality_panel.h"
+#include "scenario/accuracy_study.h"
 #include "widgets/cut_panel.h"
 #include "widgets/stroke_recorder.h"
 #include "widgets/scenario_document.h"
@@ -16,6 +20,8 @@
 #include <QAction>
 #include <vtkCamera.h>
 #include <QCheckBox>
+#include <QComboBox>
+#include <QMenuBar>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
@@ -294,6 +300,113 @@ private slots:
         QCOMPARE(s.window.simulation().steps(), 0LL);
         QCOMPARE(s.window.simulation().effectNames().size(), std::size_t(1));
         s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    void exportWritesThePackage() {
+        Studio s;
+        QVERIFY(s.load(Sample::Myoma));
+        // A short scenario: the export replays it.
+        s.window.session().setPendingSweep(planeSweep(s.window.session().base()->mesh, 0.7));
+        QVERIFY(s.idle());
+        QVERIFY(s.window.session().applyPending());
+        QVERIFY(s.idle());
+        const QString out = m_dir.filePath(QStringLiteral("package"));
+        QSignalSpy finished(&s.window, &MainWindow::exportFinished);
+        QVERIFY(s.window.exportPackage(out));
+        QVERIFY(finished.wait(kWaitMs));
+        QVERIFY2(finished.first().at(0).toBool(), qPrintable(finished.first().at(1).toString()));
+        const QStringList files = finished.first().at(2).toStringList();
+        QVERIFY(files.size() >= 4);
+        for (const QString& f : files)
+            QVERIFY2(QFileInfo::exists(f), qPrintable(f));
+        QVERIFY(QFileInfo::exists(out + QStringLiteral("/manifest.json")));
+        QVERIFY(QFileInfo::exists(out + QStringLiteral("/scenario.json")));
+        // A second export into the now non-empty folder is refused, and says so.
+        finished.clear();
+        QSignalSpy errors(&s.window, &MainWindow::errorReported);
+        QVERIFY(s.window.exportPackage(out));
+        QVERIFY(finished.wait(kWaitMs));
+        QVERIFY(!finished.first().at(0).toBool());
+        QCOMPARE(errors.count(), 1);
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    void overlayAndQualityFilterSwitch() {
+        Studio s;
+        QVERIFY(s.load());
+        QualityPanel* panel = s.window.qualityPanel();
+        TetMeshActor& actor = s.window.viewport()->tetMeshActor();
+        const int tets = s.tets();
+        QCOMPARE(int(actor.displayedTets().size()), tets);
+        QCOMPARE(actor.overlayMeasure(), QualityMeasure::RadiusRatio);
+
+        auto* measure = panel->findChild<QComboBox*>(QStringLiteral("overlayMeasure"));
+        QVERIFY(measure);
+        const int dihedral = measure->findData(int(QualityMeasure::MinDihedral));
+        QVERIFY(dihedral >= 0);
+        measure->setCurrentIndex(dihedral);
+        QCOMPARE(actor.overlayMeasure(), QualityMeasure::MinDihedral);
+
+        // Only the tets below a threshold remain: count them independently.
+        auto* filter = panel->findChild<QCheckBox*>(QStringLiteral("filterEnabled"));
+        auto* threshold = panel->findChild<QDoubleSpinBox*>(QStringLiteral("filterThreshold"));
+        QVERIFY(filter && threshold);
+        threshold->setValue(30.0);
+        filter->click();
+        QVERIFY(actor.qualityFilterEnabled());
+        const auto qualities = tetQualities(s.window.session().current()->mesh);
+        int below = 0;
+        for (const TetQuality& q : qualities)
+            below += q.minDihedral * 180.0 / M_PI < 30.0;
+        QCOMPARE(int(actor.displayedTets().size()), below);
+        QVERIFY(below < tets);
+        filter->click();
+        QCOMPARE(int(actor.displayedTets().size()), tets);
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    void accuracyStudyAdoptsAPoint() {
+        Studio s;
+        QVERIFY(s.load(Sample::Myoma));
+        AccuracyPanel* panel = s.window.accuracyPanel();
+        QVERIFY(panel->hasTissue());
+        StudyConfig config = tinyConfig();
+        config.dValues = {0.1, 0.3};
+        config.repeats = 1;
+        panel->setCustomConfig(config);
+        QSignalSpy finished(panel, &AccuracyPanel::studyFinished);
+        panel->run();
+        QVERIFY(finished.wait(kWaitMs));
+        QVERIFY2(finished.first().first().toBool(), qPrintable(finished.first().at(1).toString()));
+        QVERIFY(!panel->rows().empty());
+        // Pick a hybrid row at d = 0.3 and adopt it: the document's settings follow (undoable).
+        int row = -1;
+        for (int i = 0; i < int(panel->rows().size()); ++i)
+            if (panel->rows()[i].method != "subdivision" && panel->rows()[i].d == 0.3)
+                row = i;
+        QVERIFY(row >= 0);
+        panel->selectRow(row);
+        panel->adoptSelected();
+        QCOMPARE(s.window.document().scenario().cut.d, 0.3);
+        s.action("undo")->trigger();
+        QCOMPARE(s.window.document().scenario().cut.d, 0.2);
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    void germanInterface() {
+        QVERIFY(installTranslations(*QCoreApplication::instance(), QStringLiteral("de")));
+        {
+            Studio s;
+            QStringList menus;
+            for (QAction* a : s.window.menuBar()->actions())
+                menus << a->text();
+            QVERIFY2(menus.contains(QStringLiteral("&Datei")), qPrintable(menus.join(QLatin1Char(','))));
+            QCOMPARE(s.window.cutPanel()->findChild<QPushButton*>(QStringLiteral("applyCut"))->text(),
+                     QCoreApplication::translate("resect::CutPanel", "&Apply cut"));
+            QVERIFY(s.window.cutPanel()->findChild<QPushButton*>(QStringLiteral("applyCut"))->text() !=
+                    QStringLiteral("&Apply cut"));
+        }
+        QVERIFY(installTranslations(*QCoreApplication::instance(), QStringLiteral("en")));
     }
 
     void unsavedChangesAreAskedAbout() {
