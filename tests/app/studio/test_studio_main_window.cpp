@@ -342,8 +342,8 @@ private slots:
 
         auto* measure = panel->findChild<QComboBox*>(QStringLiteral("overlayMeasure"));
         QVERIFY(measure);
-        const int dihedral = measure->findData(int(QualityMeasure::MinDihedral));
-        QVERIFY(dihedral >= 0);
+        const int dihedral = static_cast<int>(QualityMeasure::MinDihedral); // items in enum order
+        QCOMPARE(measure->itemText(dihedral), qualityMeasureTitle(QualityMeasure::MinDihedral));
         measure->setCurrentIndex(dihedral);
         QCOMPARE(actor.overlayMeasure(), QualityMeasure::MinDihedral);
 
