@@ -74,7 +74,7 @@ QProcessEnvironment environmentWithPlatform(const QString& platform) {
 /// The 3-D view's part of the window: between the authoring dock on the left and the
 /// panels on the right, below the menu bar, above the status bar (1280 x 800 window).
 QRect viewRegion(const QImage& image) {
-    return QRect(int(0.25 * image.width()), int(0.06 * image.height()), int(0.40 * image.width()),
+    return QRect(int(0.24 * image.width()), int(0.06 * image.height()), int(0.34 * image.width()),
                  int(0.86 * image.height()));
 }
 
