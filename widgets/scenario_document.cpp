@@ -93,11 +93,16 @@ bool ScenarioDocument::newFromSample(const QString& name, QString* error) {
                                  }())));
         return false;
     }
-    Scenario s;
-    s.metadata.title = toStd(tr("New %1 scenario").arg(name));
     TissueSpec tissue;
     tissue.name = toStd(name);
     tissue.surface = "sample:" + toStd(name);
+    startNew(std::move(tissue));
+    return true;
+}
+
+void ScenarioDocument::startNew(TissueSpec tissue) {
+    Scenario s;
+    s.metadata.title = toStd(tr("New %1 scenario").arg(fromStd(tissue.name)));
     s.tissues.push_back(std::move(tissue));
     s.tool = defaultTool();
     EffectSpec deformation;
@@ -105,7 +110,6 @@ bool ScenarioDocument::newFromSample(const QString& name, QString* error) {
     s.effects.push_back(std::move(deformation));
     removeOwnAutosave();
     reset(std::move(s), QString(), false);
-    return true;
 }
 
 bool ScenarioDocument::newFromAnatomy(const QString& path, QString* error) {
@@ -117,19 +121,11 @@ bool ScenarioDocument::newFromAnatomy(const QString& path, QString* error) {
     const QString suffix = info.suffix().toLower();
     const bool tetMesh = suffix == QLatin1String("vtu") || suffix == QLatin1String("msh") ||
                          suffix == QLatin1String("node") || suffix == QLatin1String("ele");
-    Scenario s;
-    s.metadata.title = toStd(tr("New %1 scenario").arg(info.completeBaseName()));
     TissueSpec tissue;
     tissue.name = toStd(info.completeBaseName().isEmpty() ? QStringLiteral("tissue") : info.completeBaseName());
     // Absolute until the first save, which rewrites it relative to the scenario's folder.
     (tetMesh ? tissue.mesh : tissue.surface) = toStd(info.absoluteFilePath());
-    s.tissues.push_back(std::move(tissue));
-    s.tool = defaultTool();
-    EffectSpec deformation;
-    deformation.name = "deformation";
-    s.effects.push_back(std::move(deformation));
-    removeOwnAutosave();
-    reset(std::move(s), QString(), false);
+    startNew(std::move(tissue));
     return true;
 }
 

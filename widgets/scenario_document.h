@@ -178,6 +178,8 @@ private:
     /// Replaces the whole document (not undoable): clears the undo stack, sets the file.
     void reset(Scenario scenario, const QString& filePath, bool modified);
     void setFilePath(const QString& path);
+    /// A new, unsaved document on `tissue` with the default tool and the deformation effect.
+    void startNew(TissueSpec tissue);
     void removeOwnAutosave();
     void pushCutSettings(const CutSettings& after, int field);
     QSettings& settings() const;

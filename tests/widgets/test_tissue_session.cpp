@@ -5,32 +5,19 @@
 #include "widgets/scenario_document.h"
 #include "widgets/tissue_session.h"
 
+#include "tests/widgets/sweep_fixtures.h"
+
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 
 using namespace resect;
+using resect::test::planeSweep;
 
 namespace {
 
 constexpr int kWaitMs = 120'000;
 
-/// A horizontal plane through the tissue at `heightFraction` of its height, as a sweep from
-/// a start curve before the tissue to an end curve behind it.
-SweepSpec planeSweep(const TetMesh& mesh, double heightFraction) {
-    Vec3 lo = mesh.ref(0), hi = mesh.ref(0);
-    for (const Vec3& p : mesh.referencePositions()) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
-    const Vec3 pad = 0.1 * (hi - lo);
-    const double z = lo.z() + heightFraction * (hi.z() - lo.z());
-    SweepSpec s;
-    s.name = "plane";
-    s.curves = {{Vec3(lo.x() - pad.x(), lo.y() - pad.y(), z), Vec3(hi.x() + pad.x(), lo.y() - pad.y(), z + 1e-3)},
-                {Vec3(lo.x() - pad.x(), hi.y() + pad.y(), z + 2e-3), Vec3(hi.x() + pad.x(), hi.y() + pad.y(), z + 3e-3)}};
-    return s;
-}
 
 } // namespace
 
@@ -73,7 +60,7 @@ private slots:
         const double volume = session.current()->quality.volume;
 
         // A pending cut previews without touching the document.
-        session.setPendingSweep(planeSweep(session.base()->mesh, 0.6));
+        session.setPendingSweep(planeSweep(session.base()->mesh, 0.6, 1e-3));
         QVERIFY(session.hasPending());
         QVERIFY(session.waitForIdle(kWaitMs));
         QVERIFY2(session.previewError().isEmpty(), qPrintable(session.previewError()));
@@ -132,7 +119,7 @@ private slots:
         TissueSession session(doc);
         QVERIFY(doc.newFromSample(QStringLiteral("myoma")));
         QVERIFY(session.waitForIdle(kWaitMs));
-        session.setPendingSweep(planeSweep(session.base()->mesh, 0.5));
+        session.setPendingSweep(planeSweep(session.base()->mesh, 0.5, 1e-3));
         QVERIFY(session.waitForIdle(kWaitMs));
         QVERIFY(session.preview());
         QSignalSpy changed(&session, &TissueSession::previewChanged);

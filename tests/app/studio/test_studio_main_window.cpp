@@ -26,32 +26,20 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSettings>
+#include "tests/widgets/sweep_fixtures.h"
+
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 
 using namespace resect;
+using resect::test::planeSweep;
 
 namespace {
 
 constexpr int kWaitMs = 180'000;
 
-/// A horizontal plane through the tissue at `heightFraction` of its height.
-SweepSpec planeSweep(const TetMesh& mesh, double heightFraction) {
-    Vec3 lo = mesh.ref(0), hi = mesh.ref(0);
-    for (const Vec3& p : mesh.referencePositions()) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
-    const Vec3 pad = 0.1 * (hi - lo);
-    const double z = lo.z() + heightFraction * (hi.z() - lo.z());
-    SweepSpec s;
-    s.name = "plane";
-    s.curves = {{Vec3(lo.x() - pad.x(), lo.y() - pad.y(), z), Vec3(hi.x() + pad.x(), lo.y() - pad.y(), z)},
-                {Vec3(lo.x() - pad.x(), hi.y() + pad.y(), z), Vec3(hi.x() + pad.x(), hi.y() + pad.y(), z)}};
-    return s;
-}
 
 /// A window on the sample polyp, loaded, with errors signalled instead of shown.
 struct Studio {
