@@ -6,85 +6,85 @@
     <message>
         <location filename="../widgets/accuracy_chart.cpp" line="+86"/>
         <source>Subdivision</source>
-        <translation type="unfinished"></translation>
+        <translation>Unterteilung</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Hybrid, standard triangulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Hybrid, Standard-Triangulierung</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Hybrid, enhanced triangulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Hybrid, erweiterte Triangulierung</translation>
     </message>
     <message>
         <location line="+31"/>
         <source>Pareto front</source>
-        <translation type="unfinished"></translation>
+        <translation>Pareto-Front</translation>
     </message>
     <message>
         <location line="+124"/>
         <source>%1 on %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 auf %2</translation>
     </message>
     <message numerus="yes">
         <location line="+1"/>
         <source>d = %1, snapping %2, %n relaxation step(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>d = %1, Einrasten %2, %n Relaxationsschritt</numerusform>
+            <numerusform>d = %1, Einrasten %2, %n Relaxationsschritte</numerusform>
         </translation>
     </message>
     <message>
         <location line="+1"/>
         <source>on</source>
-        <translation type="unfinished"></translation>
+        <translation>an</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>off</source>
-        <translation type="unfinished"></translation>
+        <translation>aus</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cut-face error: max %1, mean %2 mean edge lengths</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler der Schnittfacetten: max. %1, Mittel %2 mittlere Kantenlängen</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Tets: %1 (%2 added); worst radius ratio %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Tetraeder: %1 (%2 hinzugefügt); schlechtestes Radienverhältnis %3</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Stable time step: %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Stabiler Zeitschritt: %1 s</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cut: %1 ms; simulation: %2 ms per simulated second</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnitt: %1 ms; Simulation: %2 ms pro simulierter Sekunde</translation>
     </message>
     <message>
         <location line="+60"/>
         <source>Cut time (ms, log scale)</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnittzeit (ms, logarithmische Skala)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Simulation cost (ms per simulated second, log scale)</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulationsaufwand (ms pro simulierter Sekunde, logarithmische Skala)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Cut-face error, max (mean edge lengths)</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler der Schnittfacetten, max. (mittlere Kantenlängen)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Run the study to see what accuracy costs.</source>
-        <translation type="unfinished"></translation>
+        <translation>Führen Sie die Studie aus, um zu sehen, was Genauigkeit kostet.</translation>
     </message>
 </context>
 <context>
@@ -92,144 +92,144 @@
     <message>
         <location filename="../widgets/accuracy_panel.cpp" line="+34"/>
         <source>Tiny (seconds)</source>
-        <translation type="unfinished"></translation>
+        <translation>Winzig (Sekunden)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Quick (minutes)</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnell (Minuten)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>How many settings the study tries and how often it repeats each cut</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie viele Einstellungen die Studie ausprobiert und wie oft sie jeden Schnitt wiederholt</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Simulation cost</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulationsaufwand</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Cut time</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnittzeit</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The cost on the horizontal axis: compute time per simulated second of the cut tissue, or the time of the cut itself</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Aufwand auf der horizontalen Achse: Rechenzeit pro simulierter Sekunde des geschnittenen Gewebes oder die Zeit des Schnitts selbst</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausführen</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Cut copies of the tissue with every method and setting of the preset</source>
-        <translation type="unfinished"></translation>
+        <translation>Kopien des Gewebes mit jeder Methode und Einstellung der Voreinstellung schneiden</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cancel</source>
-        <translation type="unfinished">Abbrechen</translation>
+        <translation>Abbrechen</translation>
     </message>
     <message>
         <location line="+20"/>
         <source>Adopt</source>
-        <translation type="unfinished"></translation>
+        <translation>Übernehmen</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Use the selected point&apos;s method, d, snapping and relaxation as the scenario&apos;s cut settings</source>
-        <translation type="unfinished"></translation>
+        <translation>Methode, d, Einrasten und Relaxation des gewählten Punkts als Schnitteinstellungen des Szenarios verwenden</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Preset:</source>
-        <translation type="unfinished"></translation>
+        <translation>Voreinstellung:</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Cost:</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufwand:</translation>
     </message>
     <message>
         <location line="+81"/>
         <source>Custom</source>
-        <translation type="unfinished"></translation>
+        <translation>Benutzerdefiniert</translation>
     </message>
     <message>
         <location line="+35"/>
         <source>Starting the study...</source>
-        <translation type="unfinished"></translation>
+        <translation>Studie wird gestartet...</translation>
     </message>
     <message>
         <location line="+34"/>
         <source>Running: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Läuft: %1</translation>
     </message>
     <message numerus="yes">
         <location line="+17"/>
         <source>Study finished: %n row(s).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Studie abgeschlossen: %n Zeile.</numerusform>
+            <numerusform>Studie abgeschlossen: %n Zeilen.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <location line="+2"/>
         <source>Study cancelled after %n row(s).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Studie nach %n Zeile abgebrochen.</numerusform>
+            <numerusform>Studie nach %n Zeilen abgebrochen.</numerusform>
         </translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Study failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Studie fehlgeschlagen: %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Cancelling...</source>
-        <translation type="unfinished">Wird abgebrochen...</translation>
+        <translation>Wird abgebrochen...</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Click a point of the chart to see its settings.</source>
-        <translation type="unfinished"></translation>
+        <translation>Klicken Sie auf einen Punkt des Diagramms, um seine Einstellungen zu sehen.</translation>
     </message>
     <message numerus="yes">
         <location line="+4"/>
         <source>%1, d = %2, snapping %3, %n relaxation step(s): error max %4 mean edge lengths, %5 tets, cut %6 ms, simulation %7 ms per simulated second</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1, d = %2, Einrasten %3, %n Relaxationsschritt: Fehler max. %4 mittlere Kantenlängen, %5 Tetraeder, Schnitt %6 ms, Simulation %7 ms pro simulierter Sekunde</numerusform>
+            <numerusform>%1, d = %2, Einrasten %3, %n Relaxationsschritte: Fehler max. %4 mittlere Kantenlängen, %5 Tetraeder, Schnitt %6 ms, Simulation %7 ms pro simulierter Sekunde</numerusform>
         </translation>
     </message>
     <message>
         <location line="+4"/>
         <source>on</source>
-        <translation type="unfinished"></translation>
+        <translation>an</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>off</source>
-        <translation type="unfinished"></translation>
+        <translation>aus</translation>
     </message>
     <message numerus="yes">
         <location line="+19"/>
         <source>Ready: %1 (%n tet(s)).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Bereit: %1 (%n Tetraeder).</numerusform>
+            <numerusform>Bereit: %1 (%n Tetraeder).</numerusform>
         </translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Open a scenario with a tissue to run the study.</source>
-        <translation type="unfinished"></translation>
+        <translation>Öffnen Sie ein Szenario mit einem Gewebe, um die Studie auszuführen.</translation>
     </message>
 </context>
 <context>
@@ -237,88 +237,88 @@
     <message>
         <location filename="../widgets/authoring_panel.cpp" line="+34"/>
         <source>Draw sweep</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnittfläche zeichnen</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Click the points of the start curve; hold the button to drag a point into place. Drag any point to move it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Klicken Sie die Punkte der Startkurve an; halten Sie die Maustaste gedrückt, um einen Punkt an seinen Platz zu ziehen. Ziehen Sie einen beliebigen Punkt, um ihn zu verschieben.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>End curve</source>
-        <translation type="unfinished"></translation>
+        <translation>Endkurve</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Edit the end curve; it starts as a copy of the start curve.</source>
-        <translation type="unfinished"></translation>
+        <translation>Bearbeiten Sie die Endkurve; sie beginnt als Kopie der Startkurve.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Record stroke</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnittbewegung aufzeichnen</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Drag the electrode across the view with the left button.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ziehen Sie die Elektrode mit der linken Maustaste durch die Ansicht.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Finish</source>
-        <translation type="unfinished"></translation>
+        <translation>Fertigstellen</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Use the drawn sweep surface.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die gezeichnete Schnittfläche verwenden.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Clear</source>
-        <translation type="unfinished"></translation>
+        <translation>Löschen</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Remove the drawn curves and the recorded stroke.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die gezeichneten Kurven und die aufgezeichnete Schnittbewegung entfernen.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Play stroke</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnittbewegung abspielen</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Replay the last recorded stroke.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die zuletzt aufgezeichnete Schnittbewegung erneut abspielen.</translation>
     </message>
     <message>
         <location line="+40"/>
         <location line="+77"/>
         <source>Draw a sweep surface or record a stroke.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeichnen Sie eine Schnittfläche oder zeichnen Sie eine Schnittbewegung auf.</translation>
     </message>
     <message>
         <location line="-28"/>
         <source>Recording: drag the electrode across the view with the left button.</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufzeichnung: Ziehen Sie die Elektrode mit der linken Maustaste durch die Ansicht.</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Sweep surface handed on.</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnittfläche übergeben.</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>Stroke recorded: %1 poses over %2 s.</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnittbewegung aufgezeichnet: %1 Posen über %2 s.</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>The sweep surface is valid: drag points to adjust it, or press Finish.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Schnittfläche ist gültig: Ziehen Sie Punkte, um sie anzupassen, oder klicken Sie auf „Fertigstellen“.</translation>
     </message>
 </context>
 <context>
@@ -326,198 +326,198 @@
     <message>
         <location filename="../widgets/cut_panel.cpp" line="+36"/>
         <source>%1 → %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 → %2</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Method</source>
-        <translation type="unfinished"></translation>
+        <translation>Methode</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Hybrid</source>
-        <translation type="unfinished"></translation>
+        <translation>Hybrid</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Subdivision</source>
-        <translation type="unfinished"></translation>
+        <translation>Unterteilung</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cutting method</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnittmethode</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Enhanced (symmetric)</source>
-        <translation type="unfinished"></translation>
+        <translation>Erweitert (symmetrisch)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Standard</source>
-        <translation type="unfinished"></translation>
+        <translation>Standard</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Face triangulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Triangulierung der Seitenflächen</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Cut-node threshold d as a fraction of the mean edge length (the paper: 0.2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Schwellenwert d für Schnittknoten als Bruchteil der mittleren Kantenlänge (im Artikel: 0,2)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Threshold d</source>
-        <translation type="unfinished"></translation>
+        <translation>Schwellenwert d</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Snap cut nodes onto the sweep</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnittknoten auf der Schnittfläche einrasten</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Relaxation steps</source>
-        <translation type="unfinished"></translation>
+        <translation>Relaxationsschritte</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Spring weight</source>
-        <translation type="unfinished"></translation>
+        <translation>Federgewicht</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Particle weight</source>
-        <translation type="unfinished"></translation>
+        <translation>Partikelgewicht</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Relaxation damping</source>
-        <translation type="unfinished"></translation>
+        <translation>Relaxationsdämpfung</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Relaxation rings</source>
-        <translation type="unfinished"></translation>
+        <translation>Relaxationsringe</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Preview</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorschau</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Tets</source>
-        <translation type="unfinished"></translation>
+        <translation>Tetraeder</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Added tets</source>
-        <translation type="unfinished"></translation>
+        <translation>Hinzugefügte Tetraeder</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cut edges</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschnittene Kanten</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cut nodes</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnittknoten</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Snapped nodes</source>
-        <translation type="unfinished"></translation>
+        <translation>Eingerastete Knoten</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Decomposed tets</source>
-        <translation type="unfinished"></translation>
+        <translation>Zerlegte Tetraeder</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Separated tets</source>
-        <translation type="unfinished"></translation>
+        <translation>Abgetrennte Tetraeder</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Pieces</source>
-        <translation type="unfinished"></translation>
+        <translation>Teile</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Min radius ratio</source>
-        <translation type="unfinished"></translation>
+        <translation>Min. Radienverhältnis</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Stable time step (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Stabiler Zeitschritt (s)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Intersect / select / decompose (ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>Verschneiden / Auswählen / Zerlegen (ms)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Snap / relax / update (ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>Einrasten / Relaxieren / Aktualisieren (ms)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Surface cut (ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>Oberflächenschnitt (ms)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Total (ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>Gesamt (ms)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Apply cut</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnitt &amp;anwenden</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Discard</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Verwerfen</translation>
     </message>
     <message>
         <location line="+98"/>
         <source>No pending cut. Draw a sweep or record a stroke to preview a cut.</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein ausstehender Schnitt. Zeichnen Sie eine Schnittfläche oder zeichnen Sie eine Schnittbewegung auf, um eine Vorschau des Schnitts zu sehen.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The cut fails: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Schnitt schlägt fehl: %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Computing the preview...</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorschau wird berechnet...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Preview of the pending cut (not applied yet).</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorschau des ausstehenden Schnitts (noch nicht angewendet).</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>%1 (%2 refused)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2 abgelehnt)</translation>
     </message>
     <message>
         <location line="+7"/>
         <location line="+3"/>
         <source>%1 / %2 / %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2 / %3</translation>
     </message>
 </context>
 <context>
@@ -646,28 +646,28 @@
     <message>
         <location line="-46"/>
         <source>The tissue could not be loaded or cut.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Gewebe konnte nicht geladen oder geschnitten werden.</translation>
     </message>
     <message>
         <location line="+32"/>
         <location line="+55"/>
         <source>The cut was not applied.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Schnitt wurde nicht angewendet.</translation>
     </message>
     <message>
         <location line="-40"/>
         <source>&amp;New from sample</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Neu aus Beispiel</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Polyp</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Polyp</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Myoma</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Myom</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -677,27 +677,27 @@
     <message>
         <location line="+2"/>
         <source>&amp;Import anatomy...</source>
-        <translation type="unfinished"></translation>
+        <translation>Anatomie &amp;importieren...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Open &amp;recent</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Save</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Speichern</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Save &amp;as...</source>
-        <translation type="unfinished"></translation>
+        <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Export for the trainer...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Export für den Trainer...</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -707,249 +707,249 @@
     <message>
         <location line="+3"/>
         <source>&amp;Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Rückgängig</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Wiederholen</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>&amp;Cut</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Schnitt</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Apply pending cut</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausstehenden Schnitt &amp;anwenden</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>&amp;Discard pending cut</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausstehenden Schnitt &amp;verwerfen</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Simulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Si&amp;mulation</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Play / pause</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Abspielen / Pause</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>&amp;Step</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Schritt</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Reset</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Zurücksetzen</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ansicht</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Reset camera</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Kamera zurücksetzen</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Show &amp;tet mesh</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Tetraedernetz anzeigen</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Show high-resolution &amp;surface</source>
-        <translation type="unfinished"></translation>
+        <translation>Hochaufgelöste &amp;Oberfläche anzeigen</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>&amp;Language</source>
-        <translation type="unfinished"></translation>
+        <translation>S&amp;prache</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>System default</source>
-        <translation type="unfinished"></translation>
+        <translation>Systemstandard</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Cut</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnitt</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Simulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulation</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Accuracy vs time</source>
-        <translation type="unfinished"></translation>
+        <translation>Genauigkeit vs. Zeit</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Quality</source>
-        <translation type="unfinished"></translation>
+        <translation>Qualität</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Authoring</source>
-        <translation type="unfinished"></translation>
+        <translation>Erstellung</translation>
     </message>
     <message>
         <location line="+26"/>
         <source>%1 has unsaved changes. Save them?</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>Could not create the scenario.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Szenario konnte nicht erstellt werden.</translation>
     </message>
     <message>
         <location line="+23"/>
         <location line="+10"/>
         <source>The scenario was not saved.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Szenario wurde nicht gespeichert.</translation>
     </message>
     <message>
         <location line="-7"/>
         <location line="+10"/>
         <source>Saved %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 gespeichert</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Save scenario</source>
-        <translation type="unfinished"></translation>
+        <translation>Szenario speichern</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Scenarios (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Szenarien (*.json)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Open scenario or anatomy</source>
-        <translation type="unfinished"></translation>
+        <translation>Szenario oder Anatomie öffnen</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Scenarios (*.json);;Tet meshes (*.vtu *.msh *.node *.ele);;Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Szenarien (*.json);;Tetraedernetze (*.vtu *.msh *.node *.ele);;Oberflächen (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;Alle Dateien (*)</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Import anatomy</source>
-        <translation type="unfinished"></translation>
+        <translation>Anatomie importieren</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;Tet meshes (*.vtu *.msh *.node *.ele);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Oberflächen (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;Tetraedernetze (*.vtu *.msh *.node *.ele);;Alle Dateien (*)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Could not import %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 konnte nicht importiert werden.</translation>
     </message>
     <message>
         <location line="+5"/>
         <location line="+7"/>
         <location line="+21"/>
         <source>The scenario was not exported.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Szenario wurde nicht exportiert.</translation>
     </message>
     <message>
         <location line="-28"/>
         <source>An export is already running.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Export läuft bereits.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>The export could not be started.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Export konnte nicht gestartet werden.</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Exporting to %1...</source>
-        <translation type="unfinished"></translation>
+        <translation>Export nach %1...</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Export for the trainer: choose an empty folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Export für den Trainer: einen leeren Ordner wählen</translation>
     </message>
     <message numerus="yes">
         <location line="+7"/>
         <source>Exported %n file(s) to %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Datei nach %1 exportiert</numerusform>
+            <numerusform>%n Dateien nach %1 exportiert</numerusform>
         </translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Resect Studio did not close properly. Recover the unsaved changes to %1?</source>
-        <translation type="unfinished"></translation>
+        <translation>Resect Studio wurde nicht ordnungsgemäß beendet. Die ungespeicherten Änderungen an %1 wiederherstellen?</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>an untitled scenario</source>
-        <translation type="unfinished"></translation>
+        <translation>ein unbenanntes Szenario</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>The autosave could not be recovered.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die automatische Sicherung konnte nicht wiederhergestellt werden.</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>%1[*] - Resect Studio</source>
-        <translation type="unfinished"></translation>
+        <translation>%1[*] - Resect Studio</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Clear list</source>
-        <translation type="unfinished"></translation>
+        <translation>Liste leeren</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Loading...</source>
-        <translation type="unfinished"></translation>
+        <translation>Wird geladen...</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>No tissue</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Gewebe</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1: %2 nodes, %3 tets, %4 pieces, min radius ratio %5, stable dt %6 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 Knoten, %3 Tetraeder, %4 Teile, min. Radienverhältnis %5, stabiles dt %6 s</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Loading and meshing the tissue...</source>
-        <translation type="unfinished"></translation>
+        <translation>Gewebe wird geladen und vernetzt...</translation>
     </message>
     <message>
         <location line="+118"/>
         <source>The language changes when Resect Studio is started again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Sprache ändert sich beim nächsten Start von Resect Studio.</translation>
     </message>
     <message>
         <location line="-118"/>
@@ -967,17 +967,17 @@
     <message>
         <location filename="../widgets/quality_histogram.cpp" line="+173"/>
         <source>before</source>
-        <translation type="unfinished"></translation>
+        <translation>vorher</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>after</source>
-        <translation type="unfinished"></translation>
+        <translation>nachher</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>log scale</source>
-        <translation type="unfinished"></translation>
+        <translation>logarithmische Skala</translation>
     </message>
 </context>
 <context>
@@ -985,17 +985,17 @@
     <message>
         <location filename="../widgets/quality_colors.cpp" line="+31"/>
         <source>None</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Radius ratio</source>
-        <translation type="unfinished"></translation>
+        <translation>Radienverhältnis</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Min. dihedral (°)</source>
-        <translation type="unfinished"></translation>
+        <translation>Min. Diederwinkel (°)</translation>
     </message>
 </context>
 <context>
@@ -1003,112 +1003,112 @@
     <message>
         <location filename="../widgets/quality_panel.cpp" line="+44"/>
         <source>Display</source>
-        <translation type="unfinished"></translation>
+        <translation>Darstellung</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Surface</source>
-        <translation type="unfinished"></translation>
+        <translation>Oberfläche</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Wireframe</source>
-        <translation type="unfinished"></translation>
+        <translation>Drahtgitter</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Shrunk tets</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschrumpfte Tetraeder</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Mode</source>
-        <translation type="unfinished"></translation>
+        <translation>Modus</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Colour by</source>
-        <translation type="unfinished"></translation>
+        <translation>Einfärben nach</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>Auto</source>
-        <translation type="unfinished"></translation>
+        <translation>Auto</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Set the colour range to the range of the data</source>
-        <translation type="unfinished"></translation>
+        <translation>Den Farbbereich auf den Wertebereich der Daten setzen</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Range</source>
-        <translation type="unfinished"></translation>
+        <translation>Bereich</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Only tets worse than</source>
-        <translation type="unfinished"></translation>
+        <translation>Nur Tetraeder schlechter als</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Filter</source>
-        <translation type="unfinished"></translation>
+        <translation>Filter</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Clip</source>
-        <translation type="unfinished"></translation>
+        <translation>Abschneiden</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>x</source>
-        <translation type="unfinished"></translation>
+        <translation>x</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>y</source>
-        <translation type="unfinished"></translation>
+        <translation>y</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>z</source>
-        <translation type="unfinished"></translation>
+        <translation>z</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>view direction</source>
-        <translation type="unfinished"></translation>
+        <translation>Blickrichtung</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Clipping</source>
-        <translation type="unfinished"></translation>
+        <translation>Clipping</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Inspect tets by clicking</source>
-        <translation type="unfinished"></translation>
+        <translation>Tetraeder per Klick untersuchen</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>Logarithmic counts</source>
-        <translation type="unfinished"></translation>
+        <translation>Logarithmische Anzahlen</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Histogram</source>
-        <translation type="unfinished"></translation>
+        <translation>Histogramm</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Summary</source>
-        <translation type="unfinished"></translation>
+        <translation>Übersicht</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Tet</source>
-        <translation type="unfinished"></translation>
+        <translation>Tetraeder</translation>
     </message>
 </context>
 <context>
@@ -1116,62 +1116,62 @@
     <message>
         <location filename="../widgets/quality_summary_table.cpp" line="+26"/>
         <source>before</source>
-        <translation type="unfinished"></translation>
+        <translation>vorher</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>after</source>
-        <translation type="unfinished"></translation>
+        <translation>nachher</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Nodes</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Edges</source>
-        <translation type="unfinished"></translation>
+        <translation>Kanten</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Tets</source>
-        <translation type="unfinished"></translation>
+        <translation>Tetraeder</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Min. radius ratio</source>
-        <translation type="unfinished"></translation>
+        <translation>Min. Radienverhältnis</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>tet_minAR (radius ratio / 3)</source>
-        <translation type="unfinished"></translation>
+        <translation>tet_minAR (Radienverhältnis / 3)</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Volume ratio Vmax/Vmin</source>
-        <translation type="unfinished"></translation>
+        <translation>Volumenverhältnis Vmax/Vmin</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Edge ratio lmax/lmin</source>
-        <translation type="unfinished"></translation>
+        <translation>Kantenverhältnis lmax/lmin</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Min. dihedral (°)</source>
-        <translation type="unfinished"></translation>
+        <translation>Min. Diederwinkel (°)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Max. dihedral (°)</source>
-        <translation type="unfinished"></translation>
+        <translation>Max. Diederwinkel (°)</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Stable dt (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Stabiles dt (s)</translation>
     </message>
 </context>
 <context>
@@ -1179,42 +1179,42 @@
     <message>
         <location filename="../widgets/scenario_commands.cpp" line="+77"/>
         <source>Change cut settings</source>
-        <translation type="unfinished">Schnitteinstellungen ändern</translation>
+        <translation>Schnitteinstellungen ändern</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>Add stroke</source>
-        <translation type="unfinished">Schnittbewegung hinzufügen</translation>
+        <translation>Schnittbewegung hinzufügen</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Remove stroke</source>
-        <translation type="unfinished">Schnittbewegung entfernen</translation>
+        <translation>Schnittbewegung entfernen</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Add sweep</source>
-        <translation type="unfinished">Sweep-Fläche hinzufügen</translation>
+        <translation>Schnittfläche hinzufügen</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>Remove sweep</source>
-        <translation type="unfinished">Sweep-Fläche entfernen</translation>
+        <translation>Schnittfläche entfernen</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Switch effect on</source>
-        <translation type="unfinished">Effekt einschalten</translation>
+        <translation>Effekt einschalten</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Switch effect off</source>
-        <translation type="unfinished">Effekt ausschalten</translation>
+        <translation>Effekt ausschalten</translation>
     </message>
     <message>
         <location line="+52"/>
         <source>Change title</source>
-        <translation type="unfinished">Titel ändern</translation>
+        <translation>Titel ändern</translation>
     </message>
 </context>
 <context>
@@ -1238,7 +1238,7 @@
     <message>
         <location line="-7"/>
         <source>%1: no such file</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Datei nicht vorhanden</translation>
     </message>
     <message>
         <location line="+40"/>
@@ -1266,12 +1266,12 @@
     <message>
         <location filename="../widgets/simulation_controller.cpp" line="+146"/>
         <source>The simulation has no usable time step.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Simulation hat keinen verwendbaren Zeitschritt.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>The simulation diverged at t = %1 s: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Simulation ist bei t = %1 s divergiert: %2</translation>
     </message>
 </context>
 <context>
@@ -1279,108 +1279,108 @@
     <message>
         <location filename="../widgets/simulation_panel.cpp" line="+23"/>
         <source>Deformation (mass-spring)</source>
-        <translation type="unfinished"></translation>
+        <translation>Verformung (Masse-Feder)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Gravity</source>
-        <translation type="unfinished"></translation>
+        <translation>Schwerkraft</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Fixed regions</source>
-        <translation type="unfinished"></translation>
+        <translation>Fixierte Bereiche</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Tool contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Instrumentenkontakt</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Damping</source>
-        <translation type="unfinished"></translation>
+        <translation>Dämpfung</translation>
     </message>
     <message>
         <location line="+14"/>
         <location line="+79"/>
         <source>Play</source>
-        <translation type="unfinished"></translation>
+        <translation>Abspielen</translation>
     </message>
     <message>
         <location line="-77"/>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Reset</source>
-        <translation type="unfinished"></translation>
+        <translation>Zurücksetzen</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Effects in the scenario</source>
-        <translation type="unfinished"></translation>
+        <translation>Effekte im Szenario</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>Cost</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufwand</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Simulated time</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulierte Zeit</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Time step</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeitschritt</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Per step</source>
-        <translation type="unfinished"></translation>
+        <translation>Pro Schritt</translation>
     </message>
     <message>
         <location line="+43"/>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>Pause</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>No tissue to simulate.</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Gewebe zum Simulieren.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Running.</source>
-        <translation type="unfinished"></translation>
+        <translation>Läuft.</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Paused.</source>
-        <translation type="unfinished"></translation>
+        <translation>Pausiert.</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 s (%2 steps)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s (%2 Schritte)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 s (stable: %2 s)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s (stabil: %2 s)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1: %2 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 ms</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 ms per simulated second</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ms pro simulierter Sekunde</translation>
     </message>
 </context>
 <context>
@@ -1388,12 +1388,12 @@
     <message>
         <location filename="../widgets/stroke_recorder.cpp" line="+254"/>
         <source>Nothing was recorded: hold the left button and drag the electrode across the view.</source>
-        <translation type="unfinished"></translation>
+        <translation>Es wurde nichts aufgezeichnet: Halten Sie die linke Maustaste gedrückt und ziehen Sie die Elektrode durch die Ansicht.</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>The recorded stroke does not make a usable cut: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Die aufgezeichnete Schnittbewegung ergibt keinen verwendbaren Schnitt: %1</translation>
     </message>
 </context>
 <context>
@@ -1401,32 +1401,32 @@
     <message>
         <location filename="../widgets/sweep_edit_tool.cpp" line="+181"/>
         <source>The start curve needs at least two points; it has %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Startkurve braucht mindestens zwei Punkte; sie hat %1.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The end curve needs at least two points; it has %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Endkurve braucht mindestens zwei Punkte; sie hat %1.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The start curve has %1 points and the end curve %2; both need the same number of points.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Startkurve hat %1 Punkte und die Endkurve %2; beide brauchen gleich viele Punkte.</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Points %1 and %2 of the start curve coincide.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Punkte %1 und %2 der Startkurve fallen zusammen.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Points %1 and %2 of the end curve coincide.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Punkte %1 und %2 der Endkurve fallen zusammen.</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>These curves do not make a usable sweep surface: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Diese Kurven ergeben keine verwendbare Schnittfläche: %1</translation>
     </message>
 </context>
 <context>
@@ -1434,57 +1434,57 @@
     <message>
         <location filename="../widgets/tet_inspector.cpp" line="+25"/>
         <source>Tet</source>
-        <translation type="unfinished"></translation>
+        <translation>Tetraeder</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Reference volume</source>
-        <translation type="unfinished"></translation>
+        <translation>Referenzvolumen</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Current volume</source>
-        <translation type="unfinished"></translation>
+        <translation>Aktuelles Volumen</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Radius ratio</source>
-        <translation type="unfinished"></translation>
+        <translation>Radienverhältnis</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Min. dihedral (°)</source>
-        <translation type="unfinished"></translation>
+        <translation>Min. Diederwinkel (°)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Max. dihedral (°)</source>
-        <translation type="unfinished"></translation>
+        <translation>Max. Diederwinkel (°)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Min. edge</source>
-        <translation type="unfinished"></translation>
+        <translation>Min. Kante</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Max. edge</source>
-        <translation type="unfinished"></translation>
+        <translation>Max. Kante</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Scheme</source>
-        <translation type="unfinished"></translation>
+        <translation>Schema</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>original</source>
-        <translation type="unfinished"></translation>
+        <translation>ursprünglich</translation>
     </message>
 </context>
 <context>
@@ -1492,32 +1492,32 @@
     <message>
         <location filename="../widgets/tissue_session.cpp" line="+168"/>
         <source>There is no cut to apply: draw a sweep or record a stroke first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Es gibt keinen Schnitt zum Anwenden: Zeichnen Sie zuerst eine Schnittfläche oder zeichnen Sie eine Schnittbewegung auf.</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>The cut cannot be applied: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Schnitt kann nicht angewendet werden: %1</translation>
     </message>
     <message>
         <location line="+72"/>
         <source>Internal error: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Interner Fehler: %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Internal error</source>
-        <translation type="unfinished"></translation>
+        <translation>Interner Fehler</translation>
     </message>
     <message>
         <location line="+30"/>
         <source>tissue &apos;%1&apos;: binding the surface: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Gewebe „%1“: Binden der Oberfläche: %2</translation>
     </message>
     <message>
         <location line="+30"/>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
