@@ -6,85 +6,85 @@
     <message>
         <location filename="../widgets/accuracy_chart.cpp" line="+86"/>
         <source>Subdivision</source>
-        <translation type="unfinished"></translation>
+        <translation>Subdivision</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Hybrid, standard triangulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Hybride, triangulation standard</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Hybrid, enhanced triangulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Hybride, triangulation améliorée</translation>
     </message>
     <message>
         <location line="+31"/>
         <source>Pareto front</source>
-        <translation type="unfinished"></translation>
+        <translation>Front de Pareto</translation>
     </message>
     <message>
         <location line="+124"/>
         <source>%1 on %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 sur %2</translation>
     </message>
     <message numerus="yes">
         <location line="+1"/>
         <source>d = %1, snapping %2, %n relaxation step(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>d = %1, accrochage %2, %n étape de relaxation</numerusform>
+            <numerusform>d = %1, accrochage %2, %n étapes de relaxation</numerusform>
         </translation>
     </message>
     <message>
         <location line="+1"/>
         <source>on</source>
-        <translation type="unfinished"></translation>
+        <translation>activé</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>off</source>
-        <translation type="unfinished"></translation>
+        <translation>désactivé</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cut-face error: max %1, mean %2 mean edge lengths</source>
-        <translation type="unfinished"></translation>
+        <translation>Erreur de la face de coupe : max. %1, moyenne %2 longueurs d&apos;arête moyennes</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Tets: %1 (%2 added); worst radius ratio %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Tétraèdres : %1 (%2 ajoutés) ; pire rapport des rayons %3</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Stable time step: %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Pas de temps stable : %1 s</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cut: %1 ms; simulation: %2 ms per simulated second</source>
-        <translation type="unfinished"></translation>
+        <translation>Coupe : %1 ms ; simulation : %2 ms par seconde simulée</translation>
     </message>
     <message>
         <location line="+60"/>
         <source>Cut time (ms, log scale)</source>
-        <translation type="unfinished"></translation>
+        <translation>Durée de la coupe (ms, échelle logarithmique)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Simulation cost (ms per simulated second, log scale)</source>
-        <translation type="unfinished"></translation>
+        <translation>Coût de la simulation (ms par seconde simulée, échelle logarithmique)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Cut-face error, max (mean edge lengths)</source>
-        <translation type="unfinished"></translation>
+        <translation>Erreur de la face de coupe, max. (longueurs d&apos;arête moyennes)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Run the study to see what accuracy costs.</source>
-        <translation type="unfinished"></translation>
+        <translation>Lancez l&apos;étude pour voir ce que coûte la précision.</translation>
     </message>
 </context>
 <context>
@@ -92,144 +92,144 @@
     <message>
         <location filename="../widgets/accuracy_panel.cpp" line="+34"/>
         <source>Tiny (seconds)</source>
-        <translation type="unfinished"></translation>
+        <translation>Très rapide (secondes)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Quick (minutes)</source>
-        <translation type="unfinished"></translation>
+        <translation>Rapide (minutes)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>How many settings the study tries and how often it repeats each cut</source>
-        <translation type="unfinished"></translation>
+        <translation>Nombre de réglages essayés par l&apos;étude et nombre de répétitions de chaque coupe</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Simulation cost</source>
-        <translation type="unfinished"></translation>
+        <translation>Coût de la simulation</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Cut time</source>
-        <translation type="unfinished"></translation>
+        <translation>Durée de la coupe</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The cost on the horizontal axis: compute time per simulated second of the cut tissue, or the time of the cut itself</source>
-        <translation type="unfinished"></translation>
+        <translation>Le coût sur l&apos;axe horizontal : temps de calcul par seconde simulée du tissu coupé, ou durée de la coupe elle-même</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Lancer</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Cut copies of the tissue with every method and setting of the preset</source>
-        <translation type="unfinished"></translation>
+        <translation>Coupe des copies du tissu avec chaque méthode et chaque réglage du préréglage</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cancel</source>
-        <translation type="unfinished">Annuler</translation>
+        <translation>Annuler</translation>
     </message>
     <message>
         <location line="+20"/>
         <source>Adopt</source>
-        <translation type="unfinished"></translation>
+        <translation>Adopter</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Use the selected point&apos;s method, d, snapping and relaxation as the scenario&apos;s cut settings</source>
-        <translation type="unfinished"></translation>
+        <translation>Utiliser la méthode, d, l&apos;accrochage et la relaxation du point sélectionné comme paramètres de coupe du scénario</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Preset:</source>
-        <translation type="unfinished"></translation>
+        <translation>Préréglage :</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Cost:</source>
-        <translation type="unfinished"></translation>
+        <translation>Coût :</translation>
     </message>
     <message>
         <location line="+81"/>
         <source>Custom</source>
-        <translation type="unfinished"></translation>
+        <translation>Personnalisé</translation>
     </message>
     <message>
         <location line="+35"/>
         <source>Starting the study...</source>
-        <translation type="unfinished"></translation>
+        <translation>Démarrage de l&apos;étude...</translation>
     </message>
     <message>
         <location line="+34"/>
         <source>Running: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>En cours : %1</translation>
     </message>
     <message numerus="yes">
         <location line="+17"/>
         <source>Study finished: %n row(s).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Étude terminée : %n ligne.</numerusform>
+            <numerusform>Étude terminée : %n lignes.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <location line="+2"/>
         <source>Study cancelled after %n row(s).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Étude annulée après %n ligne.</numerusform>
+            <numerusform>Étude annulée après %n lignes.</numerusform>
         </translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Study failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Échec de l&apos;étude : %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Cancelling...</source>
-        <translation type="unfinished">Annulation...</translation>
+        <translation>Annulation...</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Click a point of the chart to see its settings.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cliquez sur un point du graphique pour voir ses réglages.</translation>
     </message>
     <message numerus="yes">
         <location line="+4"/>
         <source>%1, d = %2, snapping %3, %n relaxation step(s): error max %4 mean edge lengths, %5 tets, cut %6 ms, simulation %7 ms per simulated second</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1, d = %2, accrochage %3, %n étape de relaxation : erreur max. %4 longueurs d&apos;arête moyennes, %5 tétraèdres, coupe %6 ms, simulation %7 ms par seconde simulée</numerusform>
+            <numerusform>%1, d = %2, accrochage %3, %n étapes de relaxation : erreur max. %4 longueurs d&apos;arête moyennes, %5 tétraèdres, coupe %6 ms, simulation %7 ms par seconde simulée</numerusform>
         </translation>
     </message>
     <message>
         <location line="+4"/>
         <source>on</source>
-        <translation type="unfinished"></translation>
+        <translation>activé</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>off</source>
-        <translation type="unfinished"></translation>
+        <translation>désactivé</translation>
     </message>
     <message numerus="yes">
         <location line="+19"/>
         <source>Ready: %1 (%n tet(s)).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Prêt : %1 (%n tétraèdre).</numerusform>
+            <numerusform>Prêt : %1 (%n tétraèdres).</numerusform>
         </translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Open a scenario with a tissue to run the study.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ouvrez un scénario contenant un tissu pour lancer l&apos;étude.</translation>
     </message>
 </context>
 <context>
@@ -237,88 +237,88 @@
     <message>
         <location filename="../widgets/authoring_panel.cpp" line="+34"/>
         <source>Draw sweep</source>
-        <translation type="unfinished"></translation>
+        <translation>Dessiner une surface de balayage</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Click the points of the start curve; hold the button to drag a point into place. Drag any point to move it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cliquez les points de la courbe de départ ; maintenez le bouton enfoncé pour faire glisser un point à sa place. Faites glisser n&apos;importe quel point pour le déplacer.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>End curve</source>
-        <translation type="unfinished"></translation>
+        <translation>Courbe de fin</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Edit the end curve; it starts as a copy of the start curve.</source>
-        <translation type="unfinished"></translation>
+        <translation>Modifiez la courbe de fin ; elle est d&apos;abord une copie de la courbe de départ.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Record stroke</source>
-        <translation type="unfinished"></translation>
+        <translation>Enregistrer un geste</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Drag the electrode across the view with the left button.</source>
-        <translation type="unfinished"></translation>
+        <translation>Faites glisser l&apos;électrode à travers la vue avec le bouton gauche.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Finish</source>
-        <translation type="unfinished"></translation>
+        <translation>Terminer</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Use the drawn sweep surface.</source>
-        <translation type="unfinished"></translation>
+        <translation>Utiliser la surface de balayage dessinée.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Clear</source>
-        <translation type="unfinished"></translation>
+        <translation>Effacer</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Remove the drawn curves and the recorded stroke.</source>
-        <translation type="unfinished"></translation>
+        <translation>Supprimer les courbes dessinées et le geste enregistré.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Play stroke</source>
-        <translation type="unfinished"></translation>
+        <translation>Rejouer le geste</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Replay the last recorded stroke.</source>
-        <translation type="unfinished"></translation>
+        <translation>Rejouer le dernier geste enregistré.</translation>
     </message>
     <message>
         <location line="+40"/>
         <location line="+77"/>
         <source>Draw a sweep surface or record a stroke.</source>
-        <translation type="unfinished"></translation>
+        <translation>Dessinez une surface de balayage ou enregistrez un geste de coupe.</translation>
     </message>
     <message>
         <location line="-28"/>
         <source>Recording: drag the electrode across the view with the left button.</source>
-        <translation type="unfinished"></translation>
+        <translation>Enregistrement : faites glisser l&apos;électrode à travers la vue avec le bouton gauche.</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Sweep surface handed on.</source>
-        <translation type="unfinished"></translation>
+        <translation>Surface de balayage transmise.</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>Stroke recorded: %1 poses over %2 s.</source>
-        <translation type="unfinished"></translation>
+        <translation>Geste enregistré : %1 poses sur %2 s.</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>The sweep surface is valid: drag points to adjust it, or press Finish.</source>
-        <translation type="unfinished"></translation>
+        <translation>La surface de balayage est valide : faites glisser des points pour l&apos;ajuster, ou appuyez sur Terminer.</translation>
     </message>
 </context>
 <context>
@@ -326,198 +326,198 @@
     <message>
         <location filename="../widgets/cut_panel.cpp" line="+36"/>
         <source>%1 → %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 → %2</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Method</source>
-        <translation type="unfinished"></translation>
+        <translation>Méthode</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Hybrid</source>
-        <translation type="unfinished"></translation>
+        <translation>Hybride</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Subdivision</source>
-        <translation type="unfinished"></translation>
+        <translation>Subdivision</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cutting method</source>
-        <translation type="unfinished"></translation>
+        <translation>Méthode de coupe</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Enhanced (symmetric)</source>
-        <translation type="unfinished"></translation>
+        <translation>Améliorée (symétrique)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Standard</source>
-        <translation type="unfinished"></translation>
+        <translation>Standard</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Face triangulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Triangulation des faces</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Cut-node threshold d as a fraction of the mean edge length (the paper: 0.2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Seuil d des nœuds de coupe, en fraction de la longueur d&apos;arête moyenne (dans l&apos;article : 0,2)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Threshold d</source>
-        <translation type="unfinished"></translation>
+        <translation>Seuil d</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Snap cut nodes onto the sweep</source>
-        <translation type="unfinished"></translation>
+        <translation>Accrocher les nœuds de coupe à la surface de balayage</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Relaxation steps</source>
-        <translation type="unfinished"></translation>
+        <translation>Étapes de relaxation</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Spring weight</source>
-        <translation type="unfinished"></translation>
+        <translation>Poids des ressorts</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Particle weight</source>
-        <translation type="unfinished"></translation>
+        <translation>Poids des particules</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Relaxation damping</source>
-        <translation type="unfinished"></translation>
+        <translation>Amortissement de la relaxation</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Relaxation rings</source>
-        <translation type="unfinished"></translation>
+        <translation>Anneaux de relaxation</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Preview</source>
-        <translation type="unfinished"></translation>
+        <translation>Aperçu</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Tets</source>
-        <translation type="unfinished"></translation>
+        <translation>Tétraèdres</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Added tets</source>
-        <translation type="unfinished"></translation>
+        <translation>Tétraèdres ajoutés</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cut edges</source>
-        <translation type="unfinished"></translation>
+        <translation>Arêtes coupées</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cut nodes</source>
-        <translation type="unfinished"></translation>
+        <translation>Nœuds de coupe</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Snapped nodes</source>
-        <translation type="unfinished"></translation>
+        <translation>Nœuds accrochés</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Decomposed tets</source>
-        <translation type="unfinished"></translation>
+        <translation>Tétraèdres décomposés</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Separated tets</source>
-        <translation type="unfinished"></translation>
+        <translation>Tétraèdres séparés</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Pieces</source>
-        <translation type="unfinished"></translation>
+        <translation>Morceaux</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Min radius ratio</source>
-        <translation type="unfinished"></translation>
+        <translation>Rapport des rayons min.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Stable time step (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pas de temps stable (s)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Intersect / select / decompose (ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>Intersection / sélection / décomposition (ms)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Snap / relax / update (ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>Accrochage / relaxation / mise à jour (ms)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Surface cut (ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>Coupe de la surface (ms)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Total (ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>Total (ms)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Apply cut</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Appliquer la coupe</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Discard</source>
-        <translation type="unfinished"></translation>
+        <translation>A&amp;bandonner</translation>
     </message>
     <message>
         <location line="+98"/>
         <source>No pending cut. Draw a sweep or record a stroke to preview a cut.</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucune coupe en attente. Dessinez une surface de balayage ou enregistrez un geste de coupe pour afficher l&apos;aperçu d&apos;une coupe.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The cut fails: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>La coupe échoue : %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Computing the preview...</source>
-        <translation type="unfinished"></translation>
+        <translation>Calcul de l&apos;aperçu...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Preview of the pending cut (not applied yet).</source>
-        <translation type="unfinished"></translation>
+        <translation>Aperçu de la coupe en attente (pas encore appliquée).</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>%1 (%2 refused)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2 refusés)</translation>
     </message>
     <message>
         <location line="+7"/>
         <location line="+3"/>
         <source>%1 / %2 / %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2 / %3</translation>
     </message>
 </context>
 <context>
@@ -646,28 +646,28 @@
     <message>
         <location line="-46"/>
         <source>The tissue could not be loaded or cut.</source>
-        <translation type="unfinished"></translation>
+        <translation>Le tissu n&apos;a pas pu être chargé ou coupé.</translation>
     </message>
     <message>
         <location line="+32"/>
         <location line="+55"/>
         <source>The cut was not applied.</source>
-        <translation type="unfinished"></translation>
+        <translation>La coupe n&apos;a pas été appliquée.</translation>
     </message>
     <message>
         <location line="-40"/>
         <source>&amp;New from sample</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Nouveau à partir d&apos;un exemple</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Polyp</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Polype</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Myoma</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Myome</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -677,27 +677,27 @@
     <message>
         <location line="+2"/>
         <source>&amp;Import anatomy...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Importer une anatomie...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Open &amp;recent</source>
-        <translation type="unfinished"></translation>
+        <translation>Ouvrir un fichier &amp;récent</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Save</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Enregistrer</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Save &amp;as...</source>
-        <translation type="unfinished"></translation>
+        <translation>Enregistrer &amp;sous...</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Export for the trainer...</source>
-        <translation type="unfinished"></translation>
+        <translation>E&amp;xporter pour le simulateur d&apos;entraînement...</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -707,249 +707,249 @@
     <message>
         <location line="+3"/>
         <source>&amp;Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>É&amp;dition</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Annuler</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Rétablir</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>&amp;Cut</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Coupe</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Apply pending cut</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Appliquer la coupe en attente</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>&amp;Discard pending cut</source>
-        <translation type="unfinished"></translation>
+        <translation>A&amp;bandonner la coupe en attente</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Simulation</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Simulation</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Play / pause</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Lecture / pause</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>&amp;Step</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Avancer d&apos;un pas</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Reset</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Réinitialiser</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Affichage</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Reset camera</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Réinitialiser la caméra</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Show &amp;tet mesh</source>
-        <translation type="unfinished"></translation>
+        <translation>Afficher le maillage &amp;tétraédrique</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Show high-resolution &amp;surface</source>
-        <translation type="unfinished"></translation>
+        <translation>Afficher la &amp;surface haute résolution</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>&amp;Language</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Langue</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>System default</source>
-        <translation type="unfinished"></translation>
+        <translation>Langue du système</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Cut</source>
-        <translation type="unfinished"></translation>
+        <translation>Coupe</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Simulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulation</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Accuracy vs time</source>
-        <translation type="unfinished"></translation>
+        <translation>Précision et temps</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Quality</source>
-        <translation type="unfinished"></translation>
+        <translation>Qualité</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Authoring</source>
-        <translation type="unfinished"></translation>
+        <translation>Création</translation>
     </message>
     <message>
         <location line="+26"/>
         <source>%1 has unsaved changes. Save them?</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 contient des modifications non enregistrées. Les enregistrer ?</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>Could not create the scenario.</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossible de créer le scénario.</translation>
     </message>
     <message>
         <location line="+23"/>
         <location line="+10"/>
         <source>The scenario was not saved.</source>
-        <translation type="unfinished"></translation>
+        <translation>Le scénario n&apos;a pas été enregistré.</translation>
     </message>
     <message>
         <location line="-7"/>
         <location line="+10"/>
         <source>Saved %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 enregistré</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Save scenario</source>
-        <translation type="unfinished"></translation>
+        <translation>Enregistrer le scénario</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Scenarios (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Scénarios (*.json)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Open scenario or anatomy</source>
-        <translation type="unfinished"></translation>
+        <translation>Ouvrir un scénario ou une anatomie</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Scenarios (*.json);;Tet meshes (*.vtu *.msh *.node *.ele);;Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Scénarios (*.json);;Maillages tétraédriques (*.vtu *.msh *.node *.ele);;Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;Tous les fichiers (*)</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Import anatomy</source>
-        <translation type="unfinished"></translation>
+        <translation>Importer une anatomie</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;Tet meshes (*.vtu *.msh *.node *.ele);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;Maillages tétraédriques (*.vtu *.msh *.node *.ele);;Tous les fichiers (*)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Could not import %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossible d&apos;importer %1.</translation>
     </message>
     <message>
         <location line="+5"/>
         <location line="+7"/>
         <location line="+21"/>
         <source>The scenario was not exported.</source>
-        <translation type="unfinished"></translation>
+        <translation>Le scénario n&apos;a pas été exporté.</translation>
     </message>
     <message>
         <location line="-28"/>
         <source>An export is already running.</source>
-        <translation type="unfinished"></translation>
+        <translation>Une exportation est déjà en cours.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>The export could not be started.</source>
-        <translation type="unfinished"></translation>
+        <translation>L&apos;exportation n&apos;a pas pu démarrer.</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Exporting to %1...</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportation vers %1...</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Export for the trainer: choose an empty folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportation pour le simulateur d&apos;entraînement : choisissez un dossier vide</translation>
     </message>
     <message numerus="yes">
         <location line="+7"/>
         <source>Exported %n file(s) to %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n fichier exporté vers %1</numerusform>
+            <numerusform>%n fichiers exportés vers %1</numerusform>
         </translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Resect Studio did not close properly. Recover the unsaved changes to %1?</source>
-        <translation type="unfinished"></translation>
+        <translation>Resect Studio ne s&apos;est pas fermé correctement. Récupérer les modifications non enregistrées de %1 ?</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>an untitled scenario</source>
-        <translation type="unfinished"></translation>
+        <translation>un scénario sans titre</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>The autosave could not be recovered.</source>
-        <translation type="unfinished"></translation>
+        <translation>La sauvegarde automatique n&apos;a pas pu être récupérée.</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>%1[*] - Resect Studio</source>
-        <translation type="unfinished"></translation>
+        <translation>%1[*] - Resect Studio</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Clear list</source>
-        <translation type="unfinished"></translation>
+        <translation>Effacer la liste</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Loading...</source>
-        <translation type="unfinished"></translation>
+        <translation>Chargement...</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>No tissue</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucun tissu</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1: %2 nodes, %3 tets, %4 pieces, min radius ratio %5, stable dt %6 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : %2 nœuds, %3 tétraèdres, %4 morceaux, rapport des rayons min. %5, dt stable %6 s</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Loading and meshing the tissue...</source>
-        <translation type="unfinished"></translation>
+        <translation>Chargement et maillage du tissu...</translation>
     </message>
     <message>
         <location line="+118"/>
         <source>The language changes when Resect Studio is started again.</source>
-        <translation type="unfinished"></translation>
+        <translation>La langue changera au prochain démarrage de Resect Studio.</translation>
     </message>
     <message>
         <location line="-118"/>
@@ -967,17 +967,17 @@
     <message>
         <location filename="../widgets/quality_histogram.cpp" line="+173"/>
         <source>before</source>
-        <translation type="unfinished"></translation>
+        <translation>avant</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>after</source>
-        <translation type="unfinished"></translation>
+        <translation>après</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>log scale</source>
-        <translation type="unfinished"></translation>
+        <translation>échelle logarithmique</translation>
     </message>
 </context>
 <context>
@@ -985,17 +985,17 @@
     <message>
         <location filename="../widgets/quality_colors.cpp" line="+31"/>
         <source>None</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucune</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Radius ratio</source>
-        <translation type="unfinished"></translation>
+        <translation>Rapport des rayons</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Min. dihedral (°)</source>
-        <translation type="unfinished"></translation>
+        <translation>Angle dièdre min. (°)</translation>
     </message>
 </context>
 <context>
@@ -1003,112 +1003,112 @@
     <message>
         <location filename="../widgets/quality_panel.cpp" line="+44"/>
         <source>Display</source>
-        <translation type="unfinished"></translation>
+        <translation>Affichage</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Surface</source>
-        <translation type="unfinished"></translation>
+        <translation>Surface</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Wireframe</source>
-        <translation type="unfinished"></translation>
+        <translation>Fil de fer</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Shrunk tets</source>
-        <translation type="unfinished"></translation>
+        <translation>Tétraèdres réduits</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Mode</source>
-        <translation type="unfinished"></translation>
+        <translation>Mode</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Colour by</source>
-        <translation type="unfinished"></translation>
+        <translation>Couleur selon</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>Auto</source>
-        <translation type="unfinished"></translation>
+        <translation>Auto</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Set the colour range to the range of the data</source>
-        <translation type="unfinished"></translation>
+        <translation>Régler la plage de couleurs sur l&apos;étendue des données</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Range</source>
-        <translation type="unfinished"></translation>
+        <translation>Plage</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Only tets worse than</source>
-        <translation type="unfinished"></translation>
+        <translation>Seulement les tétraèdres pires que</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Filter</source>
-        <translation type="unfinished"></translation>
+        <translation>Filtre</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Clip</source>
-        <translation type="unfinished"></translation>
+        <translation>Découper</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>x</source>
-        <translation type="unfinished"></translation>
+        <translation>x</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>y</source>
-        <translation type="unfinished"></translation>
+        <translation>y</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>z</source>
-        <translation type="unfinished"></translation>
+        <translation>z</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>view direction</source>
-        <translation type="unfinished"></translation>
+        <translation>direction de vue</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Clipping</source>
-        <translation type="unfinished"></translation>
+        <translation>Découpage</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Inspect tets by clicking</source>
-        <translation type="unfinished"></translation>
+        <translation>Inspecter les tétraèdres par clic</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>Logarithmic counts</source>
-        <translation type="unfinished"></translation>
+        <translation>Effectifs en échelle logarithmique</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Histogram</source>
-        <translation type="unfinished"></translation>
+        <translation>Histogramme</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Summary</source>
-        <translation type="unfinished"></translation>
+        <translation>Résumé</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Tet</source>
-        <translation type="unfinished"></translation>
+        <translation>Tétraèdre</translation>
     </message>
 </context>
 <context>
@@ -1116,62 +1116,62 @@
     <message>
         <location filename="../widgets/quality_summary_table.cpp" line="+26"/>
         <source>before</source>
-        <translation type="unfinished"></translation>
+        <translation>avant</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>after</source>
-        <translation type="unfinished"></translation>
+        <translation>après</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Nodes</source>
-        <translation type="unfinished"></translation>
+        <translation>Nœuds</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Edges</source>
-        <translation type="unfinished"></translation>
+        <translation>Arêtes</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Tets</source>
-        <translation type="unfinished"></translation>
+        <translation>Tétraèdres</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Min. radius ratio</source>
-        <translation type="unfinished"></translation>
+        <translation>Rapport des rayons min.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>tet_minAR (radius ratio / 3)</source>
-        <translation type="unfinished"></translation>
+        <translation>tet_minAR (rapport des rayons / 3)</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Volume ratio Vmax/Vmin</source>
-        <translation type="unfinished"></translation>
+        <translation>Rapport des volumes Vmax/Vmin</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Edge ratio lmax/lmin</source>
-        <translation type="unfinished"></translation>
+        <translation>Rapport des arêtes lmax/lmin</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Min. dihedral (°)</source>
-        <translation type="unfinished"></translation>
+        <translation>Angle dièdre min. (°)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Max. dihedral (°)</source>
-        <translation type="unfinished"></translation>
+        <translation>Angle dièdre max. (°)</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Stable dt (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>dt stable (s)</translation>
     </message>
 </context>
 <context>
@@ -1179,42 +1179,42 @@
     <message>
         <location filename="../widgets/scenario_commands.cpp" line="+77"/>
         <source>Change cut settings</source>
-        <translation type="unfinished">Modifier les paramètres de coupe</translation>
+        <translation>Modifier les paramètres de coupe</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>Add stroke</source>
-        <translation type="unfinished">Ajouter un geste de coupe</translation>
+        <translation>Ajouter un geste de coupe</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Remove stroke</source>
-        <translation type="unfinished">Supprimer le geste de coupe</translation>
+        <translation>Supprimer le geste de coupe</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Add sweep</source>
-        <translation type="unfinished">Ajouter une surface de balayage</translation>
+        <translation>Ajouter une surface de balayage</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>Remove sweep</source>
-        <translation type="unfinished">Supprimer la surface de balayage</translation>
+        <translation>Supprimer la surface de balayage</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Switch effect on</source>
-        <translation type="unfinished">Activer l&apos;effet</translation>
+        <translation>Activer l&apos;effet</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Switch effect off</source>
-        <translation type="unfinished">Désactiver l&apos;effet</translation>
+        <translation>Désactiver l&apos;effet</translation>
     </message>
     <message>
         <location line="+52"/>
         <source>Change title</source>
-        <translation type="unfinished">Modifier le titre</translation>
+        <translation>Modifier le titre</translation>
     </message>
 </context>
 <context>
@@ -1238,7 +1238,7 @@
     <message>
         <location line="-7"/>
         <source>%1: no such file</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : fichier introuvable</translation>
     </message>
     <message>
         <location line="+40"/>
@@ -1266,12 +1266,12 @@
     <message>
         <location filename="../widgets/simulation_controller.cpp" line="+146"/>
         <source>The simulation has no usable time step.</source>
-        <translation type="unfinished"></translation>
+        <translation>La simulation n&apos;a pas de pas de temps utilisable.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>The simulation diverged at t = %1 s: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>La simulation a divergé à t = %1 s : %2</translation>
     </message>
 </context>
 <context>
@@ -1279,108 +1279,108 @@
     <message>
         <location filename="../widgets/simulation_panel.cpp" line="+23"/>
         <source>Deformation (mass-spring)</source>
-        <translation type="unfinished"></translation>
+        <translation>Déformation (masses-ressorts)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Gravity</source>
-        <translation type="unfinished"></translation>
+        <translation>Gravité</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Fixed regions</source>
-        <translation type="unfinished"></translation>
+        <translation>Régions fixes</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Tool contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Contact de l&apos;instrument</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Damping</source>
-        <translation type="unfinished"></translation>
+        <translation>Amortissement</translation>
     </message>
     <message>
         <location line="+14"/>
         <location line="+79"/>
         <source>Play</source>
-        <translation type="unfinished"></translation>
+        <translation>Lecture</translation>
     </message>
     <message>
         <location line="-77"/>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Avancer d&apos;un pas</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Reset</source>
-        <translation type="unfinished"></translation>
+        <translation>Réinitialiser</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Effects in the scenario</source>
-        <translation type="unfinished"></translation>
+        <translation>Effets du scénario</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>Cost</source>
-        <translation type="unfinished"></translation>
+        <translation>Coût</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Simulated time</source>
-        <translation type="unfinished"></translation>
+        <translation>Temps simulé</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Time step</source>
-        <translation type="unfinished"></translation>
+        <translation>Pas de temps</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Per step</source>
-        <translation type="unfinished"></translation>
+        <translation>Par pas</translation>
     </message>
     <message>
         <location line="+43"/>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>Pause</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>No tissue to simulate.</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucun tissu à simuler.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Running.</source>
-        <translation type="unfinished"></translation>
+        <translation>En cours.</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Paused.</source>
-        <translation type="unfinished"></translation>
+        <translation>En pause.</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 s (%2 steps)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s (%2 pas)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 s (stable: %2 s)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s (stable : %2 s)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1: %2 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : %2 ms</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 ms per simulated second</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ms par seconde simulée</translation>
     </message>
 </context>
 <context>
@@ -1388,12 +1388,12 @@
     <message>
         <location filename="../widgets/stroke_recorder.cpp" line="+254"/>
         <source>Nothing was recorded: hold the left button and drag the electrode across the view.</source>
-        <translation type="unfinished"></translation>
+        <translation>Rien n&apos;a été enregistré : maintenez le bouton gauche enfoncé et faites glisser l&apos;électrode à travers la vue.</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>The recorded stroke does not make a usable cut: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Le geste enregistré ne donne pas une coupe utilisable : %1</translation>
     </message>
 </context>
 <context>
@@ -1401,32 +1401,32 @@
     <message>
         <location filename="../widgets/sweep_edit_tool.cpp" line="+181"/>
         <source>The start curve needs at least two points; it has %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>La courbe de départ nécessite au moins deux points ; elle en a %1.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The end curve needs at least two points; it has %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>La courbe de fin nécessite au moins deux points ; elle en a %1.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The start curve has %1 points and the end curve %2; both need the same number of points.</source>
-        <translation type="unfinished"></translation>
+        <translation>La courbe de départ a %1 points et la courbe de fin %2 ; les deux doivent avoir le même nombre de points.</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Points %1 and %2 of the start curve coincide.</source>
-        <translation type="unfinished"></translation>
+        <translation>Les points %1 et %2 de la courbe de départ coïncident.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Points %1 and %2 of the end curve coincide.</source>
-        <translation type="unfinished"></translation>
+        <translation>Les points %1 et %2 de la courbe de fin coïncident.</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>These curves do not make a usable sweep surface: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Ces courbes ne donnent pas une surface de balayage utilisable : %1</translation>
     </message>
 </context>
 <context>
@@ -1434,57 +1434,57 @@
     <message>
         <location filename="../widgets/tet_inspector.cpp" line="+25"/>
         <source>Tet</source>
-        <translation type="unfinished"></translation>
+        <translation>Tétraèdre</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nœud %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Reference volume</source>
-        <translation type="unfinished"></translation>
+        <translation>Volume de référence</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Current volume</source>
-        <translation type="unfinished"></translation>
+        <translation>Volume actuel</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Radius ratio</source>
-        <translation type="unfinished"></translation>
+        <translation>Rapport des rayons</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Min. dihedral (°)</source>
-        <translation type="unfinished"></translation>
+        <translation>Angle dièdre min. (°)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Max. dihedral (°)</source>
-        <translation type="unfinished"></translation>
+        <translation>Angle dièdre max. (°)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Min. edge</source>
-        <translation type="unfinished"></translation>
+        <translation>Arête min.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Max. edge</source>
-        <translation type="unfinished"></translation>
+        <translation>Arête max.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Scheme</source>
-        <translation type="unfinished"></translation>
+        <translation>Schéma</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>original</source>
-        <translation type="unfinished"></translation>
+        <translation>d&apos;origine</translation>
     </message>
 </context>
 <context>
@@ -1492,32 +1492,32 @@
     <message>
         <location filename="../widgets/tissue_session.cpp" line="+168"/>
         <source>There is no cut to apply: draw a sweep or record a stroke first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Il n&apos;y a aucune coupe à appliquer : dessinez d&apos;abord une surface de balayage ou enregistrez un geste de coupe.</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>The cut cannot be applied: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>La coupe ne peut pas être appliquée : %1</translation>
     </message>
     <message>
         <location line="+72"/>
         <source>Internal error: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Erreur interne : %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Internal error</source>
-        <translation type="unfinished"></translation>
+        <translation>Erreur interne</translation>
     </message>
     <message>
         <location line="+30"/>
         <source>tissue &apos;%1&apos;: binding the surface: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>tissu « %1 » : liaison de la surface : %2</translation>
     </message>
     <message>
         <location line="+30"/>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : %2</translation>
     </message>
 </context>
 <context>
