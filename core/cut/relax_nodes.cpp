@@ -14,12 +14,17 @@
 namespace resect {
 namespace {
 
-double minQualityAround(const TetMesh& mesh, const std::vector<int>& group) {
+/// The smallest radius ratio of the tets at the nodes of `group`; each tet's ratio is
+/// appended to `ratios` (cleared first).
+double minQualityAround(const TetMesh& mesh, const std::vector<int>& group, std::vector<std::pair<int, double>>* ratios) {
     double q = std::numeric_limits<double>::infinity();
+    ratios->clear();
     for (int v : group)
         for (int t : mesh.nodeTets(v)) {
             const Tet& k = mesh.tet(t);
-            q = std::min(q, radiusRatio(mesh.ref(k[0]), mesh.ref(k[1]), mesh.ref(k[2]), mesh.ref(k[3])));
+            const double r = radiusRatio(mesh.ref(k[0]), mesh.ref(k[1]), mesh.ref(k[2]), mesh.ref(k[3]));
+            ratios->emplace_back(t, r);
+            q = std::min(q, r);
         }
     return q;
 }
@@ -102,19 +107,50 @@ RelaxResult relaxNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChange
     rest /= edgeCount;
     const double stepSize = 1.0 / options.damping;
 
+    // The topology does not change while nodes relax: each movable node's copies and its
+    // neighbours over all copies are gathered once, not in every step.
+    struct Relaxing {
+        int node;
+        std::vector<int> group;
+        std::vector<int> neighbours;
+    };
+    std::vector<Relaxing> relaxing;
+    relaxing.reserve(movable.size());
+    for (int n : movable) {
+        Relaxing r{n, members(n), {}};
+        for (int m : r.group)
+            for (int u : mesh.nodeNeighbours(m))
+                if (lead(u) != n)
+                    r.neighbours.push_back(u);
+        std::sort(r.neighbours.begin(), r.neighbours.end());
+        r.neighbours.erase(std::unique(r.neighbours.begin(), r.neighbours.end()), r.neighbours.end());
+        if (!r.neighbours.empty())
+            relaxing.push_back(std::move(r));
+    }
+
+    // Radius ratios of the tets around relaxing nodes, kept current as moves are accepted, so
+    // each move computes only the ratios after it.
+    std::unordered_map<int, double> tetQuality;
+    const auto cachedMinQuality = [&](const std::vector<int>& group) {
+        double q = std::numeric_limits<double>::infinity();
+        for (int v : group)
+            for (int t : mesh.nodeTets(v)) {
+                auto [it, inserted] = tetQuality.try_emplace(t, 0.0);
+                if (inserted) {
+                    const Tet& k = mesh.tet(t);
+                    it->second = radiusRatio(mesh.ref(k[0]), mesh.ref(k[1]), mesh.ref(k[2]), mesh.ref(k[3]));
+                }
+                q = std::min(q, it->second);
+            }
+        return q;
+    };
+    std::vector<std::pair<int, double>> moved;
+
     for (int step = 0; step < options.steps; ++step) {
-        for (int n : movable) {
-            const std::vector<int> group = members(n);
-            // Neighbours over all copies, and their mean distance (the springs' rest length).
-            std::vector<int> neighbours;
-            for (int m : group)
-                for (int u : mesh.nodeNeighbours(m))
-                    if (lead(u) != n)
-                        neighbours.push_back(u);
-            std::sort(neighbours.begin(), neighbours.end());
-            neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
-            if (neighbours.empty())
-                continue;
+        for (const Relaxing& item : relaxing) {
+            const int n = item.node;
+            const std::vector<int>& group = item.group;
+            const std::vector<int>& neighbours = item.neighbours;
             const Vec3 x = mesh.pos(n);
             // Eq. 2 forces in units of the rest length: linear springs and a Lennard-Jones
             // potential whose minimum is at the rest length (sigma = rest / 2^(1/6)).
@@ -126,7 +162,8 @@ RelaxResult relaxNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChange
                     continue;
                 const Vec3 dir = d / (r * rest);
                 const double spring = r - 1.0;
-                const double s6 = 0.5 / std::pow(r, 6.0);  // (sigma / r)^6 with 2^(1/6) sigma = 1
+                const double r2 = r * r;
+                const double s6 = 0.5 / (r2 * r2 * r2);  // (sigma / r)^6 with 2^(1/6) sigma = 1
                 const double lj = -24.0 * (2.0 * s6 * s6 - s6) / r;
                 force += (options.wSpring * spring + options.wParticle * lj / 12.0) * dir;
             }
@@ -138,7 +175,7 @@ RelaxResult relaxNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChange
             const Vec3 targetRef = referenceFromDeformed(mesh, group, target);
             if (!targetRef.allFinite())
                 continue;
-            const double before = minQualityAround(mesh, group);
+            const double before = cachedMinQuality(group);
             const Vec3 oldRef = mesh.ref(n), oldPos = mesh.pos(n);
             for (int m : group) {
                 mesh.referencePositions()[m] = targetRef;
@@ -152,7 +189,7 @@ RelaxResult relaxNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChange
                         orient3d(mesh.pos(q[0]), mesh.pos(q[1]), mesh.pos(q[2]), mesh.pos(q[3])) <= 0)
                         ok = false;
                 }
-            if (ok && minQualityAround(mesh, group) < before)
+            if (ok && minQualityAround(mesh, group, &moved) < before)
                 ok = false;
             if (!ok) {
                 for (int m : group) {
@@ -161,6 +198,8 @@ RelaxResult relaxNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChange
                 }
                 ++result.rejectedMoves;
             } else {
+                for (const auto& [t, q] : moved)
+                    tetQuality[t] = q;
                 ++result.acceptedMoves;
                 result.movedNodes.insert(result.movedNodes.end(), group.begin(), group.end());
             }
