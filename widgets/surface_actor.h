@@ -10,6 +10,7 @@
 class vtkActor;
 class vtkPolyData;
 class vtkPolyDataMapper;
+class vtkTexture;
 
 namespace resect {
 
@@ -24,6 +25,9 @@ public:
     vtkActor* actor() const;
     vtkPolyData* polyData() const;
     bool empty() const;
+    /// True when the shown surface has texture coordinates: it is then drawn with a
+    /// procedural tissue texture.
+    bool textured() const;
     /// Bounds of the displayed surface; invalid (min > max) when empty.
     Bounds bounds() const;
 
@@ -31,6 +35,7 @@ private:
     vtkSmartPointer<vtkPolyData> m_polyData;
     vtkSmartPointer<vtkPolyDataMapper> m_mapper;
     vtkSmartPointer<vtkActor> m_actor;
+    vtkSmartPointer<vtkTexture> m_texture; ///< made on first use
 };
 
 } // namespace resect

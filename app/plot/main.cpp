@@ -190,7 +190,7 @@ void setupChart(vtkChart* chart, const std::string& title, const std::string& xT
 
 /// Renders the view and writes a PNG atomically; fails if the image is blank.
 void writePng(vtkContextView* view, const std::string& path) {
-    view->Render();
+    view->GetRenderWindow()->Render();
     vtkNew<vtkWindowToImageFilter> grab;
     grab->SetInput(view->GetRenderWindow());
     grab->ReadFrontBufferOff();
@@ -231,6 +231,10 @@ struct Panels {
         view->GetRenderWindow()->SetSize(width, height);
         view->GetRenderWindow()->SetOffScreenRendering(1);
         view->GetRenderWindow()->SetMultiSamples(0);
+        // No interactor: rendering a window with one initialises it on the X display, which
+        // crashed in XSync about one run in four under Xvfb (vtkXRenderWindowInteractor).
+        view->SetInteractor(nullptr);
+        view->GetRenderWindow()->SetInteractor(nullptr);
         matrix->SetSize(vtkVector2i(columns, 1));
         matrix->SetGutter(vtkVector2f(70.0f, 60.0f));
         view->GetScene()->AddItem(matrix);

@@ -14,7 +14,10 @@
 #include <QTest>
 #include <QWheelEvent>
 
+#include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkImageData.h>
+#include <vtkTexture.h>
 
 #include <array>
 #include <cmath>
@@ -64,6 +67,7 @@ private slots:
     void wheelZoomsCamera();
     void setSurfaceAndClear();
     void emptySceneKeepsCamera();
+    void surfaceWithTextureCoordinatesIsTextured();
 };
 
 void TestVtkViewport::offscreenHasNoRendering() {
@@ -258,6 +262,29 @@ void TestVtkViewport::emptySceneKeepsCamera() {
     QTest::mousePress(&viewport, Qt::LeftButton, Qt::NoModifier, QPoint(100, 100));
     QTest::mouseMove(&viewport, QPoint(150, 120));
     QTest::mouseRelease(&viewport, Qt::LeftButton, Qt::NoModifier, QPoint(150, 120));
+}
+
+void TestVtkViewport::surfaceWithTextureCoordinatesIsTextured() {
+    VtkViewport view;
+    TriangleSurface s;
+    s.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+    s.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    view.setSurface(s);
+    QVERIFY(!view.surfaceActor().textured());
+    QVERIFY(view.surfaceActor().actor()->GetTexture() == nullptr);
+    s.uvs = {Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Vector2d(0, 1), Eigen::Vector2d(1, 1)};
+    view.setSurface(s);
+    QVERIFY(view.surfaceActor().textured());
+    vtkTexture* texture = view.surfaceActor().actor()->GetTexture();
+    QVERIFY(texture != nullptr);
+    texture->Update();
+    auto* image = vtkImageData::SafeDownCast(texture->GetInput());
+    QVERIFY(image != nullptr);
+    QCOMPARE(image->GetNumberOfScalarComponents(), 3);
+    // Back to a surface without coordinates: plain shading again.
+    s.uvs.clear();
+    view.setSurface(s);
+    QVERIFY(view.surfaceActor().actor()->GetTexture() == nullptr);
 }
 
 QTEST_MAIN(TestVtkViewport)
