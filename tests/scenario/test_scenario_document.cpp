@@ -795,14 +795,26 @@ void TestScenarioDocument::saveIsAtomic() {
 }
 
 void TestScenarioDocument::saveToReadOnlyFolderKeepsFile() {
-    if (geteuid() == 0)
-        QSKIP("running as root: folder permissions do not apply");
-    QTemporaryDir dir;
-    const QString file = dir.filePath("case.json");
-    QVERIFY(writeBytes(file, "previous contents"));
     Scenario s;
     ScenarioDiagnostics d;
+    QTemporaryDir dir;
     QVERIFY(parseScenario(kBaseDocument, dir.path().toStdString(), "base", s, d).ok());
+    if (geteuid() == 0) {
+        // Root ignores folder permissions (CI runs as root): /proc/self is a folder no one can
+        // create files in, and its `comm` an existing file with contents to keep.
+        const QString file = QStringLiteral("/proc/self/comm");
+        const QByteArray previous = readBytes(file);
+        QVERIFY(!previous.isEmpty());
+        const QStringList before = entries(QStringLiteral("/proc/self"));
+        const Status st = saveScenario(file.toStdString(), s);
+        QVERIFY(!st.ok());
+        QVERIFY2(QString::fromStdString(st.message()).contains("temporary"), st.message().c_str());
+        QCOMPARE(readBytes(file), previous);
+        QCOMPARE(entries(QStringLiteral("/proc/self")), before);
+        return;
+    }
+    const QString file = dir.filePath("case.json");
+    QVERIFY(writeBytes(file, "previous contents"));
     QVERIFY(QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::ExeOwner));
     const Status st = saveScenario(file.toStdString(), s);
     QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
