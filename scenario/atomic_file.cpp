@@ -5,6 +5,7 @@
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <random>
 #include <system_error>
 
@@ -95,6 +96,15 @@ Status writeAtomically(const std::string& path,
             removeQuietly(tmp);
         return Status::error(path + ": write failed (unknown error)");
     }
+}
+
+Status writeFileAtomically(const std::string& path, std::string_view bytes) {
+    return writeAtomically(path, [&](const std::string& tmp) {
+        std::ofstream f(tmp, std::ios::binary);
+        f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        f.close();
+        return f ? Status::success() : Status::error(path + ": cannot write");
+    });
 }
 
 } // namespace resect

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <string>
+#include <string_view>
 
 namespace resect {
 
@@ -15,5 +16,9 @@ namespace resect {
 /// write fails, or the rename fails, the temporary is removed and the error returned.
 Status writeAtomically(const std::string& path,
                        const std::function<Status(const std::string& tmpPath)>& write);
+
+/// Writes `bytes` to `path` atomically (writeAtomically); the error of a failed write is
+/// "PATH: cannot write".
+Status writeFileAtomically(const std::string& path, std::string_view bytes);
 
 } // namespace resect

@@ -8,7 +8,6 @@
 #include <QJsonObject>
 
 #include <cmath>
-#include <fstream>
 
 namespace resect {
 
@@ -68,12 +67,7 @@ Status writeSweep(const std::string& path, const SweepSurface& sweep) {
         curves.append(curve);
     }
     const QByteArray text = QJsonDocument(QJsonObject{{"curves", curves}}).toJson(QJsonDocument::Compact);
-    return writeAtomically(path, [&](const std::string& tmp) {
-        std::ofstream f(tmp, std::ios::binary);
-        f.write(text.constData(), text.size());
-        f.close();
-        return f ? Status::success() : Status::error(path + ": cannot write");
-    });
+    return writeFileAtomically(path, std::string_view(text.constData(), static_cast<std::size_t>(text.size())));
 }
 
 } // namespace resect

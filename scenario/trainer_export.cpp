@@ -16,7 +16,6 @@
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <new>
 
 namespace fs = std::filesystem;
@@ -97,12 +96,7 @@ bool isInside(const fs::path& file, const fs::path& dir) {
 
 Status writeJson(const std::string& path, const QJsonObject& object) {
     const QByteArray text = QJsonDocument(object).toJson(QJsonDocument::Indented);
-    return writeAtomically(path, [&](const std::string& tmp) {
-        std::ofstream out(tmp, std::ios::binary);
-        out.write(text.constData(), text.size());
-        out.close();
-        return out ? Status::success() : Status::error(path + ": cannot write");
-    });
+    return writeFileAtomically(path, std::string_view(text.constData(), static_cast<std::size_t>(text.size())));
 }
 
 QJsonObject manifestEntry(const fs::path& root, const fs::path& file) {

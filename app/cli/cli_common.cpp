@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 namespace resect::cli {
 
@@ -184,12 +183,7 @@ void printJson(const QJsonObject& object) {
 
 Status writeJson(const std::string& path, const QJsonObject& object) {
     const QByteArray text = QJsonDocument(object).toJson(QJsonDocument::Indented);
-    return writeAtomically(path, [&](const std::string& tmp) {
-        std::ofstream out(tmp, std::ios::binary);
-        out.write(text.constData(), text.size());
-        out.close();
-        return out ? Status::success() : Status::error(path + ": cannot write");
-    });
+    return writeFileAtomically(path, std::string_view(text.constData(), static_cast<std::size_t>(text.size())));
 }
 
 void requireDistinct(const std::string& input, const std::string& out) {

@@ -15,7 +15,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 namespace resect::cli {
@@ -76,12 +75,7 @@ int runCutScaling(Args& args) {
         std::fflush(stdout);
     }
     if (out)
-        requireOk(writeAtomically(*out, [&](const std::string& tmp) {
-            std::ofstream f(tmp, std::ios::binary);
-            f << csv;
-            f.close();
-            return f ? Status::success() : Status::error(*out + ": cannot write");
-        }));
+        requireOk(writeFileAtomically(*out, csv));
     return kOk;
 }
 

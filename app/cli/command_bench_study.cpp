@@ -22,7 +22,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <memory>
 #include <thread>
 
@@ -30,12 +29,7 @@ namespace resect::cli {
 namespace {
 
 void writeText(const std::string& path, const std::string& text) {
-    const Status s = writeAtomically(path, [&](const std::string& tmp) {
-        std::ofstream f(tmp, std::ios::binary);
-        f << text;
-        f.close();
-        return f ? Status::success() : Status::error(path + ": cannot write");
-    });
+    const Status s = writeFileAtomically(path, text);
     if (!s.ok())
         throw CliError{kInternal, s.message()};
 }

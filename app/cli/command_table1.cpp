@@ -8,7 +8,6 @@
 #include "scenario/cut_study.h"
 
 #include <cstdio>
-#include <fstream>
 
 namespace resect::cli {
 
@@ -37,12 +36,7 @@ int runTable1(Args args) {
     }
     std::fputs(text.c_str(), stdout);
     if (out)
-        requireOk(writeAtomically(*out, [&](const std::string& tmp) {
-            std::ofstream f(tmp, std::ios::binary);
-            f << text;
-            f.close();
-            return f ? Status::success() : Status::error(*out + ": cannot write");
-        }));
+        requireOk(writeFileAtomically(*out, text));
     return kOk;
 }
 

@@ -50,6 +50,7 @@ private slots:
     void renameFailureIsReported();
     void missingFolderIsAnError();
     void directoryTargetIsAnError();
+    void writeFileWritesTheBytesExactly();
 };
 
 void TestAtomicFile::writesTargetAndLeavesNoTemporary() {
@@ -204,6 +205,25 @@ void TestAtomicFile::directoryTargetIsAnError() {
     QVERIFY2(s.message().find(target) != std::string::npos, s.message().c_str());
     QVERIFY(QFileInfo(dir.filePath("sub.vtu")).isDir());
     QCOMPARE(entries(dir.path()), QStringList{"sub.vtu"});
+}
+
+void TestAtomicFile::writeFileWritesTheBytesExactly() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString target = dir.filePath("report.json");
+    QVERIFY(writeBytes(target.toStdString(), "old"));
+    // Binary-safe: an embedded NUL and a CR LF come out as given, replacing the old file.
+    const std::string bytes("a\0b\r\nc", 6);
+    const Status s = writeFileAtomically(target.toStdString(), bytes);
+    QVERIFY2(s.ok(), s.message().c_str());
+    QCOMPARE(readBytes(target), QByteArray(bytes.data(), int(bytes.size())));
+    QCOMPARE(entries(dir.path()), QStringList{"report.json"});
+    // Into a missing folder: an error naming the file, nothing written.
+    const std::string missing = dir.filePath("no/such/out.json").toStdString();
+    const Status bad = writeFileAtomically(missing, bytes);
+    QVERIFY(!bad.ok());
+    QVERIFY2(bad.message().find(missing) != std::string::npos, bad.message().c_str());
+    QCOMPARE(entries(dir.path()), QStringList{"report.json"});
 }
 
 QTEST_GUILESS_MAIN(TestAtomicFile)
