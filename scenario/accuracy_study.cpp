@@ -287,7 +287,7 @@ Status measureVariant(const StudyConfig& config, const StudyMesh& meshInfo, cons
     // only): at 1.0 x, the random excitation made the slivers of a subdivided myoma diverge
     // within 50 steps in the full study.
     StepTimes steps;
-    if (Status s = timeSteps(sim, config.simSteps, 0.8 * row.stableDt, steps); !s.ok())
+    if (Status s = timeSteps(sim, config.simSteps, kLargeDeformationMargin * row.stableDt, steps); !s.ok())
         return Status::error(meshInfo.name + ", " + row.method + ": simulation: " + s.message());
     row.simMsPerStep = steps.medianMs;
     row.simMsPerSecond = steps.medianMs / row.stableDt;
@@ -423,7 +423,7 @@ Status runScalingStudy(const StudyConfig& config, std::vector<ScalingRow>& rows,
         Simulator probe(small, config.material);
         if (Status s = probe.addEffect("deformation"); !s.ok())
             return s;
-        dt = 0.8 * probe.stableTimeStep();
+        dt = kLargeDeformationMargin * probe.stableTimeStep();
     }
     for (int target : config.scalingSizes) {
         const std::string stage = std::to_string(target) + " tets";

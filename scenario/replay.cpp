@@ -11,8 +11,6 @@
 namespace resect {
 namespace {
 
-constexpr double kToolContactMargin = 0.8;
-
 /// The tool's points at time t of a stroke: linear between the two nearest samples.
 std::vector<Vec3> toolAt(const ReplayStroke& s, double t) {
     if (t <= s.times.front())
@@ -29,7 +27,9 @@ std::vector<Vec3> toolAt(const ReplayStroke& s, double t) {
 }
 
 /// The tool moved out of the way: above the tissue by twice its size.
-std::vector<Vec3> withdrawn(const std::vector<Vec3>& pose, const TetMesh& mesh) {
+} // namespace
+
+std::vector<Vec3> withdrawnTool(const std::vector<Vec3>& pose, const TetMesh& mesh) {
     const auto [lo, hi] = boundingBox(mesh.positions());
     const double lift = 2 * (hi - lo).norm() + (hi.z() - lo.z());
     std::vector<Vec3> points = pose;
@@ -37,8 +37,6 @@ std::vector<Vec3> withdrawn(const std::vector<Vec3>& pose, const TetMesh& mesh) 
         p.z() += lift;
     return points;
 }
-
-} // namespace
 
 Status replay(ReplayPlan plan, ReplayOutcome& out, const ReplayProgress& progress) {
     out = {};
@@ -55,7 +53,7 @@ Status replay(ReplayPlan plan, ReplayOutcome& out, const ReplayProgress& progres
     std::vector<Vec3> toolHome;
     for (const ReplayStroke& s : plan.strokes)
         if (!s.tool.empty()) {
-            toolHome = withdrawn(s.tool.front(), mesh);
+            toolHome = withdrawnTool(s.tool.front(), mesh);
             break;
         }
     if (wantsTool && !toolHome.empty())
@@ -86,7 +84,7 @@ Status replay(ReplayPlan plan, ReplayOutcome& out, const ReplayProgress& progres
         // integrator at "stable" keeps the margin the simulator advises (0.8).
         double dt = sim.timeStep();
         if (plan.simulation.dt <= 0 && tool && isExplicit(plan.simulation.integrator))
-            dt *= kToolContactMargin;
+            dt *= kLargeDeformationMargin;
         if (!(dt > 0) || !std::isfinite(dt))
             return Status::error("the simulation has no usable time step");
         const long long steps = static_cast<long long>(std::ceil(span / dt - 1e-9));
@@ -136,7 +134,7 @@ Status replay(ReplayPlan plan, ReplayOutcome& out, const ReplayProgress& progres
             if (Status s = simulate(stroke.times.back() - t0, [&](double t) { return toolAt(stroke, t0 + t); }); !s.ok())
                 return s;
             moved = true;
-            if (Status s = tool->setPose(withdrawn(stroke.tool.back(), mesh)); !s.ok())
+            if (Status s = tool->setPose(withdrawnTool(stroke.tool.back(), mesh)); !s.ok())
                 return s;
         }
         if (!report(done))

@@ -76,6 +76,10 @@ struct ReplayOutcome {
     std::vector<EffectTime> effectTimes;  ///< ms per effect over the whole run
 };
 
+/// The tool's points `pose` lifted straight up, clear of the tissue (by its height plus twice
+/// its diagonal, current positions): where the tool rests between strokes.
+std::vector<Vec3> withdrawnTool(const std::vector<Vec3>& pose, const TetMesh& mesh);
+
 /// Progress in [0, 1]; return false to cancel (the replay then fails with "cancelled").
 using ReplayProgress = std::function<bool(double)>;
 

@@ -1,6 +1,7 @@
 #include "widgets/simulation_controller.h"
 
 #include "core/sim/tool_contact_effect.h"
+#include "scenario/replay.h"
 #include "scenario/scenario_run.h"
 #include "widgets/scenario_document.h"
 #include "widgets/tissue_session.h"
@@ -10,28 +11,6 @@
 #include <cmath>
 
 namespace resect {
-
-namespace {
-
-/// The tool's points lifted above the tissue by twice its size, as replay withdraws it.
-std::vector<Vec3> withdrawnTool(std::vector<Vec3> points, const TetMesh& mesh) {
-    if (mesh.nodeCount() == 0)
-        return points;
-    Vec3 lo = mesh.ref(0), hi = mesh.ref(0);
-    for (const Vec3& p : mesh.referencePositions()) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
-    double toolLow = std::numeric_limits<double>::infinity();
-    for (const Vec3& p : points)
-        toolLow = std::min(toolLow, p.z());
-    const double lift = (hi.z() - toolLow) + 2.0 * (hi - lo).norm();
-    for (Vec3& p : points)
-        p.z() += lift;
-    return points;
-}
-
-} // namespace
 
 SimulationController::SimulationController(ScenarioDocument& document, TissueSession& session, QObject* parent)
     : QObject(parent), m_document(document), m_session(session) {
@@ -119,7 +98,7 @@ void SimulationController::reset() {
     m_dt = m_sim->timeStep();
     const bool tool = m_sim->findEffect("tool-contact") != nullptr;
     if (plan.simulation.dt <= 0 && tool && isExplicit(plan.simulation.integrator))
-        m_dt *= 0.8; // the margin replay keeps with tool contact (replay.h)
+        m_dt *= kLargeDeformationMargin; // as replay does with tool contact (replay.h)
     emit resetDone();
     if (wasPlaying)
         emit playingChanged(false);

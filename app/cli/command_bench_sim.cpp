@@ -77,7 +77,7 @@ int runBenchSim(Args& args) {
         TetMesh small = benchMesh(6 * 512);
         Simulator probe(small, Material{});
         requireOk(probe.addEffect("deformation"));
-        dt = 0.8 * probe.stableTimeStep();
+        dt = kLargeDeformationMargin * probe.stableTimeStep();
     }
     std::printf(
         "explicit step (symplectic Euler; deformation: distance, volume, area), dt = %.4g s\n", dt);

@@ -45,6 +45,10 @@
 
 namespace resect {
 
+/// The margin on the stable estimate for strongly deformed tissue (see "Time step" above):
+/// replay with tool contact, the studio and the benchmarks step at this fraction of it.
+inline constexpr double kLargeDeformationMargin = 0.8;
+
 enum class Integrator { SymplecticEuler, VelocityVerlet, BackwardEuler };
 
 /// "symplectic-euler", "velocity-verlet", "backward-euler".

@@ -140,21 +140,21 @@ private slots:
             QCOMPARE(QFileInfo(path).size(), qint64(f["size"].toDouble()));
             QCOMPARE(sha256(path).toHex(), f["sha256"].toString().toLatin1());
         }
-        for (const QString& must : {"scenario.json", "polyp.vtu", "polyp-visual.glb", "result/polyp.vtu",
+        for (const char* must : {"scenario.json", "polyp.vtu", "polyp-visual.glb", "result/polyp.vtu",
                                     "result/polyp.glb", "result/report.json"})
-            QVERIFY2(listed.contains(must), qPrintable(must + " missing from " + listed.join(", ")));
+            QVERIFY2(listed.contains(must), qPrintable(QString::fromLatin1(must) + " missing from " + listed.join(", ")));
         // Independent readers: VTK for the meshes, assimp for the surfaces.
-        for (const QString& vtu : {"polyp.vtu", "result/polyp.vtu"}) {
+        for (const char* vtu : {"polyp.vtu", "result/polyp.vtu"}) {
             vtkNew<vtkXMLUnstructuredGridReader> reader;
             reader->SetFileName(qPrintable(out + "/" + vtu));
             reader->Update();
             QVERIFY(reader->GetOutput()->GetNumberOfCells() > 800);
             QVERIFY(reader->GetOutput()->GetPointData()->GetArray("reference_position"));
         }
-        for (const QString& glb : {"polyp-visual.glb", "result/polyp.glb"}) {
+        for (const char* glb : {"polyp-visual.glb", "result/polyp.glb"}) {
             Assimp::Importer importer;
             const aiScene* s = importer.ReadFile(qPrintable(out + "/" + glb), 0);
-            QVERIFY2(s && s->mNumMeshes >= 1, qPrintable(glb));
+            QVERIFY2(s && s->mNumMeshes >= 1, glb);
             QVERIFY(s->mMeshes[0]->HasTextureCoords(0));
             QVERIFY(s->mMeshes[0]->mNumFaces > 1000);
         }
