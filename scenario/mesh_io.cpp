@@ -6,6 +6,11 @@
 
 namespace resect {
 
+bool isTetMeshPath(const std::string& path) {
+    const std::string ext = detail::lowerExtension(path);
+    return ext == ".vtu" || ext == ".msh" || ext == ".node" || ext == ".ele";
+}
+
 Status readTetMesh(const std::string& path, TetMesh& out) {
     const std::string ext = detail::lowerExtension(path);
     if (ext == ".vtu")

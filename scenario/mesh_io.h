@@ -16,6 +16,9 @@ namespace resect {
 /// positive orientation. Missing masses are computed from the default material density.
 /// Errors name the file and what is wrong; `out` is untouched on error.
 Status readTetMesh(const std::string& path, TetMesh& out);
+/// True if readTetMesh reads `path` by its extension (.vtu, .msh, .node, .ele, any case);
+/// anything else is taken for a surface to mesh.
+bool isTetMeshPath(const std::string& path);
 
 /// Writes .vtu atomically: points = current positions; point data reference_position
 /// (3 components), mass, velocity; cells VTK_TETRA; cell data quality (radius ratio) and

@@ -4,6 +4,7 @@
 
 #include "core/mesher/samples.h"
 #include "scenario/atomic_file.h"
+#include "scenario/mesh_io.h"
 #include "scenario/scenario_load.h"
 #include "scenario/scenario_save.h"
 
@@ -118,9 +119,7 @@ bool ScenarioDocument::newFromAnatomy(const QString& path, QString* error) {
         setError(error, tr("%1: no such file").arg(path));
         return false;
     }
-    const QString suffix = info.suffix().toLower();
-    const bool tetMesh = suffix == QLatin1String("vtu") || suffix == QLatin1String("msh") ||
-                         suffix == QLatin1String("node") || suffix == QLatin1String("ele");
+    const bool tetMesh = isTetMeshPath(QFile::encodeName(path).toStdString());
     TissueSpec tissue;
     tissue.name = toStd(info.completeBaseName().isEmpty() ? QStringLiteral("tissue") : info.completeBaseName());
     // Absolute until the first save, which rewrites it relative to the scenario's folder.

@@ -197,6 +197,7 @@ class TestMeshIo : public QObject {
     Q_OBJECT
 
 private slots:
+    void tetMeshPathsByExtension();
     void vtuRoundTripIsExact();
     void vtuHasTheContractArrays();
     void vtuOptionalArraysGetDefaults();
@@ -694,6 +695,13 @@ void TestMeshIo::damagedFilesNeverCrash() {
     const QByteArray printed = capture.text();
     QVERIFY2(printed.isEmpty(), printed.left(2000).constData());
     QVERIFY(failures > 0);
+}
+
+void TestMeshIo::tetMeshPathsByExtension() {
+    for (const char* yes : {"a.vtu", "dir.x/b.MSH", "c.node", "d.Ele", "/abs/e.vtu"})
+        QVERIFY2(isTetMeshPath(yes), yes);
+    for (const char* no : {"a.obj", "b.stl", "c.vtu.gz", "vtu", "d.", "", "e.json"})
+        QVERIFY2(!isTetMeshPath(no), no);
 }
 
 QTEST_GUILESS_MAIN(TestMeshIo)
