@@ -178,8 +178,8 @@ bool TissueSession::applyPending(QString* error) {
     const std::optional<Stroke> stroke = std::move(m_pendingStroke);
     m_pendingSweep.reset();
     m_pendingStroke.reset();
-    // Adopt the preview as the current state at once when it was computed for exactly this
-    // cut; the re-application the document change triggers replaces it with the same result.
+    // The preview is dropped; the document change below re-applies every cut, this one
+    // included, and publishes it as the current state.
     m_preview.reset();
     m_previewError.clear();
     emit previewChanged();
