@@ -2,6 +2,7 @@
 // Status: the result of an operation on untrusted input. Empty message means success.
 // Degenerate or bad input returns a Status; exceptions never cross layer boundaries.
 
+#include <cstdio>
 #include <string>
 #include <utility>
 
@@ -25,5 +26,12 @@ public:
 private:
     std::string m_message;
 };
+
+/// A number as messages print it: shortest of %g's forms ("0.5", "1e-06", "100").
+inline std::string formatNumber(double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", value);
+    return buffer;
+}
 
 } // namespace resect

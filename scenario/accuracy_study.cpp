@@ -7,6 +7,7 @@
 #include "core/mesh/quality.h"
 #include "core/mesher/tetrahedralize.h"
 #include "core/sim/simulator.h"
+#include "core/tissue/tissue.h"
 #include "scenario/anatomy.h"
 #include "scenario/cut_study.h"
 
@@ -207,8 +208,8 @@ Status validate(const StudyConfig& c) {
 
 /// One row: cut copies of `base` (with its bound surface) `repeats` times, then measure the
 /// last result.
-Status measureVariant(const StudyConfig& config, const StudyMesh& meshInfo, const TetMesh& base,
-                      const EmbeddedSurface& surface, const SweepSurface& sweep, double baseMinRatio,
+Status measureVariant(const StudyConfig& config, const StudyMesh& meshInfo, const Tissue& base,
+                      const SweepSurface& sweep, double baseMinRatio,
                       const Variant& v, const Ticker& ticker, StudyRow& row) {
     CutOptions options;
     options.method = v.method == StudyMethod::Subdivision ? CutMethod::Subdivision : CutMethod::Hybrid;
@@ -221,45 +222,40 @@ Status measureVariant(const StudyConfig& config, const StudyMesh& meshInfo, cons
 
     row = StudyRow{};
     row.mesh = meshInfo.name;
-    row.meshTets = base.tetCount();
+    row.meshTets = base.mesh().tetCount();
     row.meshMinRadiusRatio = baseMinRatio;
     row.method = studyMethodName(v.method);
     row.d = v.d;
     row.snap = v.snap;
     row.relaxSteps = v.relax;
-    row.surfaceTriangles = surface.surface().triangleCount();
+    row.surfaceTriangles = base.surface().surface().triangleCount();
 
     std::vector<double> cutMs, surfaceMs, totalMs;
     TetMesh mesh;
-    CutResult result;
-    double meanEdge = 0;
+    TissueCut result;
+    const double meanEdge = base.meanEdgeLength();
     for (int r = 0; r < config.repeats; ++r) {
         if (!ticker.report(meshInfo.name + ": " + row.method))
             return cancelled();
-        mesh = base;
-        EmbeddedSurface embedded = surface;
-        HybridCutter cutter(mesh);  // grid and mean edge: built once per loaded mesh, not timed
-        meanEdge = cutter.meanEdgeLength();
-        result = CutResult{};
-        if (Status s = cutter.cut(sweep, options, result); !s.ok())
-            return Status::error(meshInfo.name + ", " + row.method + ", d = " + std::to_string(v.d) + ": " +
-                                 s.message());
-        const auto t0 = Clock::now();
-        if (Status s = embedded.cut(mesh, result.changes, sweep); !s.ok())
-            return Status::error(meshInfo.name + ", " + row.method + ": embedded surface: " + s.message());
-        const double surf = msSince(t0);
-        cutMs.push_back(result.stats.timeMs.total);
-        surfaceMs.push_back(surf);
-        totalMs.push_back(result.stats.timeMs.total + surf);
+        // A fresh copy of the loaded tissue (grid, unit of d and bound surface: built once per
+        // loaded mesh, not timed).
+        Tissue tissue(base);
+        if (Status s = tissue.cut(sweep, options, &result); !s.ok())
+            return Status::error(meshInfo.name + ", " + row.method + ", d = " + formatNumber(v.d) + ": " + s.message());
+        cutMs.push_back(result.tets.timeMs.total);
+        surfaceMs.push_back(result.surfaceMs);
+        totalMs.push_back(result.totalMs);
+        if (r + 1 == config.repeats)
+            mesh = std::move(tissue).takeMesh();
     }
     row.cutMs = median(cutMs);
     row.cutMsMin = minimum(cutMs);
     row.surfaceMs = median(surfaceMs);
     row.totalMs = median(totalMs);
     row.tets = mesh.tetCount();
-    row.addedTets = result.stats.addedTets;
-    row.cutNodes = result.stats.cutNodes;
-    row.snappedNodes = result.stats.snappedNodes;
+    row.addedTets = result.tets.addedTets;
+    row.cutNodes = result.tets.cutNodes;
+    row.snappedNodes = result.tets.snappedNodes;
     row.minRadiusRatio = minRadiusRatio(mesh);
 
     // Accuracy: the nodes of the cut faces against the sweep, in units of the mean edge.
@@ -298,15 +294,14 @@ Status measureVariant(const StudyConfig& config, const StudyMesh& meshInfo, cons
 
 namespace {
 
-/// Every variant of the configuration on one loaded mesh (masses computed, `surface` bound to
-/// it or empty) with its sweep; one ticker unit per row.
-Status studyMesh(const StudyConfig& config, const StudyMesh& meshInfo, const TetMesh& base,
-                 const EmbeddedSurface& surface, const SweepSurface& sweep, const std::vector<Variant>& variants,
-                 Ticker& ticker, std::vector<StudyRow>& rows) {
-    const double baseMinRatio = minRadiusRatio(base);
+/// Every variant of the configuration on one loaded tissue (its surface following its tets)
+/// with its sweep; one ticker unit per row.
+Status studyMesh(const StudyConfig& config, const StudyMesh& meshInfo, const Tissue& base, const SweepSurface& sweep,
+                 const std::vector<Variant>& variants, Ticker& ticker, std::vector<StudyRow>& rows) {
+    const double baseMinRatio = minRadiusRatio(base.mesh());
     for (const Variant& v : variants) {
         StudyRow row;
-        if (Status s = measureVariant(config, meshInfo, base, surface, sweep, baseMinRatio, v, ticker, row); !s.ok())
+        if (Status s = measureVariant(config, meshInfo, base, sweep, baseMinRatio, v, ticker, row); !s.ok())
             return s;
         rows.push_back(std::move(row));
         ticker.advance();
@@ -334,13 +329,15 @@ Status runAccuracyStudy(const StudyConfig& config, std::vector<StudyRow>& rows, 
         if (Status s = meshAnatomy(anatomy, meshing, base); !s.ok())
             return Status::error(m.name + ": " + s.message());
         computeLumpedMasses(base, config.material.density);
-        EmbeddedSurface surface;
-        if (Status s = surface.bind(base, sampleSurface(m.sample, config.surfaceDetail)); !s.ok())
-            return Status::error(m.name + ": embedded surface: " + s.message());
-        surface.update(base);
         const SweepSurface sweep = loopScoopSweep(base, m.cutHeight);
+        Tissue tissue;
+        if (Status s = Tissue::create(std::move(base), sampleSurface(m.sample, config.surfaceDetail), config.material,
+                                      {}, tissue);
+            !s.ok())
+            return Status::error(m.name + ": embedded surface: " + s.message());
+        tissue.updateSurface();  // once here, not in every timed cut
         ticker.advance();
-        if (Status s = studyMesh(config, m, base, surface, sweep, variants, ticker, rows); !s.ok())
+        if (Status s = studyMesh(config, m, tissue, sweep, variants, ticker, rows); !s.ok())
             return s;
     }
     ticker.report("done");
@@ -362,11 +359,16 @@ Status runAccuracyStudyOn(const TetMesh& mesh, const SweepSurface& sweep, const 
         return cancelled();
     StudyMesh info;
     info.name = name;
-    TetMesh base = mesh;
-    computeLumpedMasses(base, config.material.density);
-    const EmbeddedSurface none;
+    TetMesh copy = mesh;
+    computeLumpedMasses(copy, config.material.density);
+    Tissue base;
+    if (Status s = Tissue::create(std::move(copy), surface ? surface->surface() : TriangleSurface{}, config.material,
+                                  {}, base);
+        !s.ok())
+        return Status::error(name + ": " + s.message());
+    base.updateSurface();  // once here, not in every timed cut
     ticker.advance();
-    if (Status s = studyMesh(config, info, base, surface ? *surface : none, sweep, variants, ticker, rows); !s.ok())
+    if (Status s = studyMesh(config, info, base, sweep, variants, ticker, rows); !s.ok())
         return s;
     ticker.report("done");
     return Status::success();
@@ -436,18 +438,20 @@ Status runScalingStudy(const StudyConfig& config, std::vector<ScalingRow>& rows,
         row.meshTets = base.tetCount();
 
         const SweepSurface sweep = localSweep(n);
+        Tissue baseTissue;
+        if (Status s = Tissue::create(base, {}, config.material, {}, baseTissue); !s.ok())
+            return Status::error(stage + ": " + s.message());
         std::vector<double> cutMs;
         for (int r = 0; r < config.scalingRepeats; ++r) {
             if (r > 0 && !ticker.report(stage + ": cut"))
                 return cancelled();
-            TetMesh mesh = base;
-            HybridCutter cutter(mesh);
-            CutResult result;
-            if (Status s = cutter.cut(sweep, CutOptions{}, result); !s.ok())
+            Tissue tissue(baseTissue);  // grid and unit of d: built once per mesh, not timed
+            TissueCut result;
+            if (Status s = tissue.cut(sweep, CutOptions{}, &result); !s.ok())
                 return Status::error(stage + ": " + s.message());
-            cutMs.push_back(result.stats.timeMs.total);
-            row.touchedTets = result.stats.touchedTets;
-            row.addedTets = result.stats.addedTets;
+            cutMs.push_back(result.totalMs);
+            row.touchedTets = result.tets.touchedTets;
+            row.addedTets = result.tets.addedTets;
         }
         row.cutMs = median(cutMs);
         row.cutMsMin = minimum(cutMs);

@@ -4,6 +4,7 @@
 #include "core/mesh/stable_time_step.h"
 #include "core/mesh/topology.h"
 #include "core/mesh/triangle_surface.h"
+#include "core/tissue/tissue.h"
 
 #include <cmath>
 #include <cstdio>
@@ -33,8 +34,8 @@ SweepSurface loopScoopSweep(const TetMesh& mesh, double heightFraction) {
 
 namespace {
 
-StudyColumn measure(const std::string& name, TetMesh& mesh, const Material& material) {
-    computeLumpedMasses(mesh, material.density);
+/// Measures of a mesh whose masses follow Eq. 3 with the material.
+StudyColumn measure(const std::string& name, const TetMesh& mesh, const Material& material) {
     StudyColumn c;
     c.name = name;
     c.quality = summarizeQuality(mesh);
@@ -50,6 +51,7 @@ Status runCutStudy(const TetMesh& mesh, const SweepSurface& sweep, double d, con
     out.d = d;
     out.columns.clear();
     TetMesh original = mesh;
+    computeLumpedMasses(original, material.density);
     out.columns.push_back(measure("original mesh", original, material));
     struct Method {
         const char* name;
@@ -64,20 +66,22 @@ Status runCutStudy(const TetMesh& mesh, const SweepSurface& sweep, double d, con
         {"hybrid (enhanced triangul.)", CutMethod::Hybrid, FaceTriangulation::Enhanced, false, 0},
         {"enhanced + snapping", CutMethod::Hybrid, FaceTriangulation::Enhanced, true, 0},
         {"enhanced + snapping + relaxation", CutMethod::Hybrid, FaceTriangulation::Enhanced, true, 10}};
+    Tissue base;  // the tissue keeps the masses of Eq. 3 through each cut
+    if (Status s = Tissue::create(std::move(original), {}, material, {}, base); !s.ok())
+        return s;
     for (const Method& m : methods) {
-        TetMesh copy = mesh;
-        HybridCutter cutter(copy);
+        Tissue tissue(base);
         CutOptions options;
         options.method = m.method;
         options.triangulation = m.triangulation;
         options.snap = m.snap;
         options.relaxSteps = m.relaxSteps;
         options.d = d;
-        CutResult result;
-        if (Status s = cutter.cut(sweep, options, result); !s.ok())
+        TissueCut result;
+        if (Status s = tissue.cut(sweep, options, &result); !s.ok())
             return Status::error(std::string(m.name) + ": " + s.message());
-        StudyColumn c = measure(m.name, copy, material);
-        c.stats = result.stats;
+        StudyColumn c = measure(m.name, tissue.mesh(), material);
+        c.stats = result.tets;
         out.columns.push_back(c);
     }
     return Status::success();

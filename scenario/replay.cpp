@@ -11,6 +11,12 @@
 namespace resect {
 namespace {
 
+/// Steps of a span: ceil(span / dt) less this slack, so that a span that is a whole number of
+/// steps up to rounding does not get one more (dimensionless, in steps).
+constexpr double kStepCountSlack = 1e-9;
+/// Progress is reported (and cancellation checked) every this many steps.
+constexpr long long kProgressInterval = 64;
+
 /// The tool's points at time t of a stroke: linear between the two nearest samples.
 std::vector<Vec3> toolAt(const ReplayStroke& s, double t) {
     if (t <= s.times.front())
@@ -19,14 +25,14 @@ std::vector<Vec3> toolAt(const ReplayStroke& s, double t) {
         return s.tool.back();
     const auto it = std::upper_bound(s.times.begin(), s.times.end(), t);
     const std::size_t i = static_cast<std::size_t>(it - s.times.begin());
-    const double a = (t - s.times[i - 1]) / std::max(s.times[i] - s.times[i - 1], 1e-300);
+    const double span = s.times[i] - s.times[i - 1];  // > 0: pose times increase strictly
+    const double a = span > 0 ? (t - s.times[i - 1]) / span : 1.0;
     std::vector<Vec3> points(s.tool[i].size());
     for (std::size_t k = 0; k < points.size(); ++k)
         points[k] = (1 - a) * s.tool[i - 1][k] + a * s.tool[i][k];
     return points;
 }
 
-/// The tool moved out of the way: above the tissue by twice its size.
 } // namespace
 
 std::vector<Vec3> withdrawnTool(const std::vector<Vec3>& pose, const TetMesh& mesh) {
@@ -38,31 +44,63 @@ std::vector<Vec3> withdrawnTool(const std::vector<Vec3>& pose, const TetMesh& me
     return points;
 }
 
+Status makeTissue(ReplayPlan& plan, Tissue& out) {
+    return Tissue::create(std::move(plan.mesh), std::move(plan.surface), plan.material, plan.anchors, out);
+}
+
+SimulationSetup simulationSetup(const ReplayPlan& plan) {
+    return {plan.simulation, plan.effects, plan.effectSettings};
+}
+
+namespace {
+
+/// The resected volume fraction: reference volume of the pieces holding no anchored node
+/// over the total (with no anchors: every piece but the largest).
+double resectedVolumeFraction(const Tissue& tissue) {
+    const TetMesh& mesh = tissue.mesh();
+    const Components& comp = tissue.pieces();
+    std::vector<double> volume(comp.count, 0.0);
+    for (int t = 0; t < mesh.tetCount(); ++t)
+        volume[comp.tetComponent[t]] += mesh.referenceVolume(t);
+    std::vector<bool> anchored(comp.count, false);
+    bool anyAnchored = false;
+    for (int n : tissue.anchors().nodes())
+        if (comp.nodeComponent[n] >= 0) {
+            anchored[comp.nodeComponent[n]] = true;
+            anyAnchored = true;
+        }
+    if (!anyAnchored && comp.count > 0)
+        anchored[std::max_element(volume.begin(), volume.end()) - volume.begin()] = true;
+    double all = 0, resected = 0;
+    for (int c = 0; c < comp.count; ++c) {
+        all += volume[c];
+        if (!anchored[c])
+            resected += volume[c];
+    }
+    return all > 0 ? resected / all : 0;
+}
+
+} // namespace
+
 Status replay(ReplayPlan plan, ReplayOutcome& out, const ReplayProgress& progress) {
     out = {};
-    TetMesh& mesh = plan.mesh;
-    out.tetsBefore = mesh.tetCount();
-    std::sort(plan.effectSettings.fixed.nodes.begin(), plan.effectSettings.fixed.nodes.end());
-    EmbeddedSurface embedded;
-    if (!plan.surface.triangles.empty())
-        if (Status s = embedded.bind(mesh, std::move(plan.surface)); !s.ok())
-            return Status::error("binding the surface: " + s.message());
+    out.tetsBefore = plan.mesh.tetCount();
 
     // The tool starts withdrawn above the first pose of the first stroke that has poses.
     const bool wantsTool = std::find(plan.effects.begin(), plan.effects.end(), "tool-contact") != plan.effects.end();
-    std::vector<Vec3> toolHome;
-    for (const ReplayStroke& s : plan.strokes)
-        if (!s.tool.empty()) {
-            toolHome = withdrawnTool(s.tool.front(), mesh);
-            break;
-        }
-    if (wantsTool && !toolHome.empty())
-        plan.effectSettings.tool.points = toolHome;
+    if (wantsTool)
+        for (const ReplayStroke& s : plan.strokes)
+            if (!s.tool.empty()) {
+                plan.effectSettings.tool.points = withdrawnTool(s.tool.front(), plan.mesh);
+                break;
+            }
 
-    Simulator sim(mesh, plan.material, plan.simulation);
-    for (const std::string& name : plan.effects)
-        if (Status s = sim.addEffect(name, plan.effectSettings); !s.ok())
-            return Status::error("effect '" + name + "': " + s.message());
+    Tissue tissue;
+    if (Status s = makeTissue(plan, tissue); !s.ok())
+        return s;
+    if (Status s = tissue.startSimulation(simulationSetup(plan)); !s.ok())
+        return s;
+    Simulator& sim = *tissue.simulator();
     auto* tool = dynamic_cast<ToolContactEffect*>(sim.findEffect("tool-contact"));
 
     // Total simulated time, for progress.
@@ -81,23 +119,23 @@ Status replay(ReplayPlan plan, ReplayOutcome& out, const ReplayProgress& progres
             return Status::success();
         // The stable estimate holds for small deformations; a tool pushing surface nodes by
         // projection deforms small elements strongly within a step, so an explicit
-        // integrator at "stable" keeps the margin the simulator advises (0.8).
+        // integrator at "stable" keeps the margin the simulator advises.
         double dt = sim.timeStep();
         if (plan.simulation.dt <= 0 && tool && isExplicit(plan.simulation.integrator))
             dt *= kLargeDeformationMargin;
         if (!(dt > 0) || !std::isfinite(dt))
             return Status::error("the simulation has no usable time step");
-        const long long steps = static_cast<long long>(std::ceil(span / dt - 1e-9));
+        const long long steps = static_cast<long long>(std::ceil(span / dt - kStepCountSlack));
         if (out.steps + steps > plan.maxSteps)
             return Status::error("the scenario needs more than " + std::to_string(plan.maxSteps) +
-                                 " simulation steps at dt = " + std::to_string(dt) +
+                                 " simulation steps at dt = " + formatNumber(dt) +
                                  " s: shorten the duration, or use a larger time step with the implicit integrator");
         const double h = span / static_cast<double>(steps);
         for (long long i = 0; i < steps; ++i) {
             if (tool && pose)
                 if (Status s = tool->setPose(pose(i * h)); !s.ok())
                     return s;
-            if (Status s = sim.step(h); !s.ok()) {
+            if (Status s = tissue.step(h); !s.ok()) {
                 out.finite = false;
                 out.failure = s.message();
                 diverged = true;
@@ -107,34 +145,24 @@ Status replay(ReplayPlan plan, ReplayOutcome& out, const ReplayProgress& progres
             out.dt = h;
             out.kineticMax = std::max(out.kineticMax, sim.lastStep().kineticEnergy);
             out.maxSpeed = std::max(out.maxSpeed, sim.lastStep().maxSpeed);
-            if (i % 64 == 0 && !report(done + i * h))
+            if (i % kProgressInterval == 0 && !report(done + i * h))
                 return Status::error("cancelled");
         }
         done += span;
         return Status::success();
     };
 
-    HybridCutter cutter(mesh);
-    bool moved = false;  // positions changed since the cutter's spatial index was built
     for (const ReplayStroke& stroke : plan.strokes) {
-        if (moved)
-            cutter.refreshSpatialIndex();
-        embedded.update(mesh);
-        CutResult result;
-        if (Status s = cutter.cut(stroke.sweep, plan.cut, result); !s.ok())
-            return Status::error(stroke.name + ": the cut failed: " + s.message());
-        out.cutTotals += result.stats;
-        sim.applyCut(result.changes);
-        EmbeddedCut ec;
-        if (Status s = embedded.cut(mesh, result.changes, stroke.sweep, &ec); !s.ok())
-            return Status::error(stroke.name + ": cutting the surface failed: " + s.message());
-        out.surfaceCapTriangles += ec.surface.capTriangles;
+        TissueCut cut;
+        if (Status s = tissue.cut(stroke.sweep, plan.cut, &cut); !s.ok())
+            return Status::error(stroke.name + ": " + s.message());
+        out.cutTotals += cut.tets;
+        out.surfaceCapTriangles += cut.surface.surface.capTriangles;
         if (tool && stroke.times.size() >= 2) {
             const double t0 = stroke.times.front();
             if (Status s = simulate(stroke.times.back() - t0, [&](double t) { return toolAt(stroke, t0 + t); }); !s.ok())
                 return s;
-            moved = true;
-            if (Status s = tool->setPose(withdrawnTool(stroke.tool.back(), mesh)); !s.ok())
+            if (Status s = tool->setPose(withdrawnTool(stroke.tool.back(), tissue.mesh())); !s.ok())
                 return s;
         }
         if (!report(done))
@@ -144,50 +172,24 @@ Status replay(ReplayPlan plan, ReplayOutcome& out, const ReplayProgress& progres
         return s;
 
     // Outcome.
-    embedded.update(mesh);
+    tissue.updateSurface();
     out.stableDt = sim.stableTimeStep();
     if (out.dt == 0)
         out.dt = sim.timeStep();
     out.kineticFinal = sim.kineticEnergy();
     out.effectTimes = sim.totalTimes();
+    const TetMesh& mesh = tissue.mesh();
     out.finite = out.finite && std::isfinite(out.kineticFinal);
     for (int n = 0; n < mesh.nodeCount() && out.finite; ++n)
         out.finite = mesh.pos(n).allFinite();
     for (int t = 0; t < mesh.tetCount(); ++t)
         out.inverted += mesh.currentVolume(t) > 0 ? 0 : 1;
-    const Components comp = connectedComponents(mesh);
-    out.pieces = comp.count;
-    std::vector<double> volume(comp.count, 0.0);
-    for (int t = 0; t < mesh.tetCount(); ++t)
-        volume[comp.tetComponent[t]] += mesh.referenceVolume(t);
-    std::vector<bool> anchored(comp.count, false);
-    bool anyAnchored = false;
-    if (const auto* fixed = sim.findEffect("fixed")) {
-        (void)fixed;
-        const auto& box = plan.effectSettings.fixed.box;
-        for (int n = 0; n < mesh.nodeCount(); ++n) {
-            const bool inBox = box && (mesh.ref(n).array() >= (*box)[0].array()).all() &&
-                               (mesh.ref(n).array() <= (*box)[1].array()).all();
-            const bool listed = !box && std::binary_search(plan.effectSettings.fixed.nodes.begin(),
-                                                           plan.effectSettings.fixed.nodes.end(), n);
-            if ((inBox || listed) && comp.nodeComponent[n] >= 0) {
-                anchored[comp.nodeComponent[n]] = true;
-                anyAnchored = true;
-            }
-        }
-    }
-    if (!anyAnchored && comp.count > 0)
-        anchored[std::max_element(volume.begin(), volume.end()) - volume.begin()] = true;
-    double all = 0, resected = 0;
-    for (int c = 0; c < comp.count; ++c) {
-        all += volume[c];
-        if (!anchored[c])
-            resected += volume[c];
-    }
-    out.resectedVolumeFraction = all > 0 ? resected / all : 0;
+    out.pieces = tissue.pieces().count;
+    out.resectedVolumeFraction = resectedVolumeFraction(tissue);
     out.minRadiusRatio = summarizeQuality(mesh).minRadiusRatio;
-    out.surface = embedded.surface();
-    out.mesh = std::move(mesh);
+    out.surface = tissue.surface().surface();
+    tissue.stopSimulation();
+    out.mesh = std::move(tissue).takeMesh();
     report(total);
     return Status::success();
 }

@@ -3,8 +3,8 @@
 // the document format: the document is turned into a ReplayPlan (scenario_replay.h), which
 // this runs.
 //
-// Timeline. Strokes run in order. A stroke cuts the tissue along its sweep (HybridCutter, then
-// the embedded surface follows: EmbeddedSurface::cut) and, when the scene has the
+// Timeline. Strokes run in order. A stroke cuts the tissue along its sweep (Tissue::cut: the
+// tets, the embedded surface and the simulation follow) and, when the scene has the
 // `tool-contact` effect and the stroke has time-stamped poses, the simulation then runs over
 // the stroke's time span with the tool at the pose interpolated linearly between samples.
 // Between strokes and after the last one the tool is withdrawn (moved above the tissue by
@@ -15,8 +15,8 @@
 // projection deforms the small elements next to a cut strongly within one step).
 //
 // Outcome. `pieces` are the tet mesh's connected components; the resected volume fraction is
-// the reference volume of the pieces holding no anchored node over the total (with no
-// anchored nodes: all pieces but the largest); `inverted` counts tets with non-positive
+// the reference volume of the pieces holding no anchored node (Tissue::anchors) over the
+// total (with no anchored nodes: all pieces but the largest); `inverted` counts tets with non-positive
 // current volume at the end. A simulation that diverges stops the replay with
 // `finite = false` and the reason in `failure` (the replay itself succeeds: expectations
 // decide).
@@ -25,10 +25,10 @@
 // count (the simulator is deterministic per thread count, core/sim/parallel.h).
 
 #include "core/cut/hybrid_cutter.h"
-#include "core/embed/embedded_surface.h"
 #include "core/mesh/material.h"
 #include "core/sim/simulator.h"
 #include "core/status.h"
+#include "core/tissue/tissue.h"
 
 #include <atomic>
 #include <functional>
@@ -47,11 +47,12 @@ struct ReplayStroke {
 struct ReplayPlan {
     TetMesh mesh;                  ///< the tissue, masses set
     TriangleSurface surface;       ///< the embedded high-resolution surface (may be empty)
+    FixedSelection anchors;        ///< the tissue's anchored nodes (its fixed regions; may be empty)
     std::vector<ReplayStroke> strokes;
     CutOptions cut;
     Material material;
     std::vector<std::string> effects;  ///< names for the EffectRegistry, in order
-    EffectSettings effectSettings;     ///< their parameters (fixed nodes, gravity, tool, ...)
+    EffectSettings effectSettings;     ///< their parameters (gravity, tool, ...; `fixed` holds `anchors`)
     SimulatorOptions simulation;       ///< integrator and dt (0: the stable step)
     double duration = 0;               ///< s simulated after the strokes
     long long maxSteps = 2'000'000;    ///< refuse plans that need more steps than this
@@ -82,6 +83,12 @@ std::vector<Vec3> withdrawnTool(const std::vector<Vec3>& pose, const TetMesh& me
 
 /// Progress in [0, 1]; return false to cancel (the replay then fails with "cancelled").
 using ReplayProgress = std::function<bool(double)>;
+
+/// The tissue of a plan: its mesh, surface, material and anchors (the plan's mesh and surface
+/// are moved into it).
+Status makeTissue(ReplayPlan& plan, Tissue& out);
+/// The simulation of a plan: integrator, step, effects and their parameters.
+SimulationSetup simulationSetup(const ReplayPlan& plan);
 
 /// Runs the plan (consumed). Errors: a cut that fails (naming the stroke), bad effect
 /// parameters, a plan needing more than maxSteps steps, cancellation.

@@ -91,6 +91,15 @@ Status planLoadedTissue(const Scenario& scenario, const TissueSpec& tissue, TetM
         plan.strokes.push_back(std::move(stroke));
     }
 
+    // Anchors: the nodes in the tissue's fixed regions (held by the `fixed` effect, and what
+    // tells anchored pieces from resected ones).
+    for (int n = 0; n < plan.mesh.nodeCount(); ++n)
+        for (const FixedRegion& r : tissue.fixedRegions)
+            if (r.contains(plan.mesh.ref(n))) {
+                plan.anchors.nodes.push_back(n);
+                break;
+            }
+
     plan.cut = toCutOptions(scenario.cut, tissue.material);
     for (const EffectSpec& e : scenario.effects) {
         plan.effects.push_back(e.name);
@@ -110,13 +119,7 @@ Status planLoadedTissue(const Scenario& scenario, const TissueSpec& tissue, TetM
             if (e.parameters.contains("coefficient"))
                 plan.effectSettings.damping = e.number("coefficient", 0);
         } else if (e.name == "fixed") {
-            for (int n = 0; n < plan.mesh.nodeCount(); ++n)
-                for (const FixedRegion& r : tissue.fixedRegions)
-                    if (r.contains(plan.mesh.ref(n))) {
-                        plan.effectSettings.fixed.nodes.push_back(n);
-                        break;
-                    }
-            if (plan.effectSettings.fixed.nodes.empty())
+            if (plan.anchors.nodes.empty())
                 return Status::error(where + ": the fixed effect holds no node (no node lies in its fixed_regions)");
         }
     }

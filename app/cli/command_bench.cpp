@@ -4,11 +4,10 @@
 // [--quick] --out DIR`) is in command_bench_study.cpp.
 #include "app/cli/cli_common.h"
 
-#include "core/cut/hybrid_cutter.h"
-#include "core/embed/embedded_surface.h"
 #include "core/mesh/box_mesh.h"
 #include "core/mesher/samples.h"
 #include "core/mesher/tetrahedralize.h"
+#include "core/tissue/tissue.h"
 #include "scenario/atomic_file.h"
 
 #include <algorithm>
@@ -54,15 +53,16 @@ int runCutScaling(Args& args) {
         requireOk(SweepSurface::fromStartEnd(start, end, sweep));
         std::vector<double> times;
         int touched = 0, added = 0;
+        Tissue loaded;  // grid and mean edge: once per loaded mesh, not per cut
+        requireOk(Tissue::create(base, {}, Material{}, {}, loaded));
         for (int r = 0; r < repeats; ++r) {
-            TetMesh mesh = base;
-            HybridCutter cutter(mesh);  // grid and mean edge: once per loaded mesh, not per cut
-            CutResult result;
-            if (Status s = cutter.cut(sweep, CutOptions{}, result); !s.ok())
+            Tissue tissue(loaded);
+            TissueCut result;
+            if (Status s = tissue.cut(sweep, CutOptions{}, &result); !s.ok())
                 throw CliError{kInternal, s.message()};
-            times.push_back(result.stats.timeMs.total);
-            touched = result.stats.touchedTets;
-            added = result.stats.addedTets;
+            times.push_back(result.totalMs);
+            touched = result.tets.touchedTets;
+            added = result.tets.addedTets;
         }
         std::sort(times.begin(), times.end());
         const double median = times[times.size() / 2];
@@ -98,7 +98,7 @@ int runSurface(Args& args) {
         }
     }
     args.finish();
-    std::printf("%10s %10s %12s %14s %16s %14s %12s %12s %12s\n", "triangles", "vertices", "bind_ms",
+    std::printf("%10s %10s %12s %14s %16s %14s %12s %12s %12s\n", "triangles", "vertices", "create_ms",
                 "apply_ns_vertex", "rebound_vertices", "rebind_us_vtx", "near_tris", "surf_cut_ms", "bind_new_ms");
     for (double detail : details) {
         TriangleSurface surface = sampleSurface(Sample::Myoma, detail);
@@ -107,30 +107,31 @@ int runSurface(Args& args) {
         const auto ms = [](auto t0) {
             return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         };
-        EmbeddedSurface embedded;
         auto t0 = std::chrono::steady_clock::now();
-        requireOk(embedded.bind(mesh, std::move(surface)));
-        const double bindMs = ms(t0);
+        Tissue tissue;
+        requireOk(Tissue::create(std::move(mesh), std::move(surface), Material{}, {}, tissue));
+        const double createMs = ms(t0);  // Tissue::create: masses, spatial index, surface binding
         std::vector<double> apply;
+        std::vector<Vec3> scratch;
         for (int r = 0; r < 15; ++r) {
             t0 = std::chrono::steady_clock::now();
-            embedded.update(mesh);
+            tissue.surface().binding().apply(tissue.mesh(), scratch);
             apply.push_back(ms(t0));
         }
         std::sort(apply.begin(), apply.end());
-        const int vertices = embedded.surface().vertexCount(), triangles = embedded.surface().triangleCount();
-        const auto [lo, hi] = boundingBox(mesh.positions());
+        const int vertices = tissue.surface().surface().vertexCount();
+        const int triangles = tissue.surface().surface().triangleCount();
+        const auto [lo, hi] = boundingBox(tissue.mesh().positions());
         const double z = 0.5 * (lo.z() + hi.z()) + 0.013;
         SweepSurface sweep;
         requireOk(SweepSurface::fromStartEnd({Vec3(lo.x() - 5, lo.y() - 5, z), Vec3(hi.x() + 5, lo.y() - 5, z + 0.2)},
                                              {Vec3(lo.x() - 5, hi.y() + 5, z + 0.1), Vec3(hi.x() + 5, hi.y() + 5, z + 0.3)},
                                              sweep));
-        HybridCutter cutter(mesh);
-        CutResult result;
-        requireOk(cutter.cut(sweep, CutOptions{}, result));
-        EmbeddedCut cut;
-        requireOk(embedded.cut(mesh, result.changes, sweep, &cut));
-        std::printf("%10d %10d %12.1f %14.2f %16d %14.3f %12d %12.2f %12.2f\n", triangles, vertices, bindMs,
+        tissue.updateSurface();
+        TissueCut result;
+        requireOk(tissue.cut(sweep, CutOptions{}, &result));
+        const EmbeddedCut& cut = result.surface;
+        std::printf("%10d %10d %12.1f %14.2f %16d %14.3f %12d %12.2f %12.2f\n", triangles, vertices, createMs,
                     1e6 * apply[apply.size() / 2] / vertices, cut.reboundVertices,
                     1e3 * cut.rebindMs / std::max(1, cut.reboundVertices), cut.surface.candidateTriangles, cut.cutMs,
                     cut.bindNewMs);

@@ -4,10 +4,9 @@
 //            [--surface HI_RES --surface-out OUT.obj]
 #include "app/cli/cli_common.h"
 
-#include "core/cut/hybrid_cutter.h"
-#include "core/embed/embedded_surface.h"
 #include "core/mesh/masses.h"
 #include "core/mesh/material.h"
+#include "core/tissue/tissue.h"
 #include "scenario/mesh_io.h"
 #include "scenario/mesh_summary.h"
 #include "scenario/surface_io.h"
@@ -74,42 +73,34 @@ int runCut(Args args) {
     std::vector<SweepSurface> sweeps(sweepFiles.size());
     for (std::size_t i = 0; i < sweepFiles.size(); ++i)
         requireOk(readSweep(sweepFiles[i], sweeps[i]));
-
     // The embedded high-resolution surface (section 5), bound to the tets before any cut.
-    EmbeddedSurface embedded;
-    if (surfaceIn) {
-        TriangleSurface surface;
+    TriangleSurface surface;
+    if (surfaceIn)
         requireOk(readSurface(*surfaceIn, surface));
-        requireOk(embedded.bind(mesh, std::move(surface)));
-    }
-    int surfaceSplitEdges = 0, surfaceCapTriangles = 0;
 
     const Material material;
     const QJsonObject before = meshStatsJson(mesh, material);
-    HybridCutter cutter(mesh);
-    CutStats total;
-    for (std::size_t i = 0; i < sweeps.size(); ++i) {
-        embedded.update(mesh);  // the surface where the tets are before this cut
-        CutResult result;
-        if (Status s = cutter.cut(sweeps[i], options, result); !s.ok())
-            throw CliError{kInternal, sweepFiles[i] + ": " + s.message()};
-        if (surfaceIn) {
-            EmbeddedCut ec;
-            if (Status s = embedded.cut(mesh, result.changes, sweeps[i], &ec); !s.ok())
-                throw CliError{kInternal, *surfaceIn + ": cutting the surface along " + sweepFiles[i] + ": " + s.message()};
-            surfaceSplitEdges += ec.surface.splitEdges;
-            surfaceCapTriangles += ec.surface.capTriangles;
-        }
-        total += result.stats;
-    }
-    // Rest state: masses from the new reference volumes (Eq. 3).
+    // The rest state of the tissue's material (Eq. 3); cuts keep it up to date.
     computeLumpedMasses(mesh, material.density);
-    requireOk(writeVtu(out, mesh));
-    if (surfaceIn) {
-        embedded.update(mesh);  // the surface deformed with the tets
-        requireOk(writeSurface(*surfaceOut, embedded.surface()));
+    Tissue tissue;
+    if (Status s = Tissue::create(std::move(mesh), std::move(surface), material, {}, tissue); !s.ok())
+        badInput((surfaceIn ? *surfaceIn : files[0]) + ": " + s.message());
+    CutStats total;
+    int surfaceSplitEdges = 0, surfaceCapTriangles = 0;
+    for (std::size_t i = 0; i < sweeps.size(); ++i) {
+        TissueCut cut;
+        if (Status s = tissue.cut(sweeps[i], options, &cut); !s.ok())
+            throw CliError{kInternal, sweepFiles[i] + ": " + s.message()};
+        surfaceSplitEdges += cut.surface.surface.splitEdges;
+        surfaceCapTriangles += cut.surface.surface.capTriangles;
+        total += cut.tets;
     }
-    const QJsonObject after = meshStatsJson(mesh, material);
+    requireOk(writeVtu(out, tissue.mesh()));
+    if (surfaceIn) {
+        tissue.updateSurface();  // the surface deformed with the tets
+        requireOk(writeSurface(*surfaceOut, tissue.surface().surface()));
+    }
+    const QJsonObject after = meshStatsJson(tissue.mesh(), material);
 
     if (report) {
         QJsonObject cut;
@@ -130,8 +121,8 @@ int runCut(Args args) {
         if (surfaceIn)
             cut["surface"] = QJsonObject{{"split_edges", surfaceSplitEdges},
                                          {"cap_triangles", surfaceCapTriangles},
-                                         {"vertices", embedded.surface().vertexCount()},
-                                         {"triangles", embedded.surface().triangleCount()}};
+                                         {"vertices", tissue.surface().surface().vertexCount()},
+                                         {"triangles", tissue.surface().surface().triangleCount()}};
         QJsonObject r;
         r["method"] = QString::fromStdString(method);
         r["triangulation"] = QString::fromStdString(triangulation);

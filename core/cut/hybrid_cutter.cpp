@@ -2,12 +2,14 @@
 
 #include "core/cut/decompose_tets.h"
 #include "core/cut/intersect_edges.h"
+#include "core/cut/relax_nodes.h"
 #include "core/cut/select_cut_nodes.h"
 #include "core/cut/separate.h"
-#include "core/cut/relax_nodes.h"
 #include "core/cut/snap_nodes.h"
 #include "core/cut/update_rest_state.h"
 #include "core/mesh/quality.h"
+#include "core/mesh/tet_mesh_backup.h"
+#include "core/mesh/topology.h"
 
 #include <algorithm>
 #include <chrono>
@@ -18,11 +20,191 @@
 namespace resect {
 namespace {
 
-double msSince(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+/// Undo of everything a cut changes in the cutter's state, undone unless committed: the mesh
+/// (exactly, TetMeshBackup) and the grid's inserts.
+class CutBackup {
+public:
+    CutBackup(TetMesh& mesh, TetGrid& grid) : m_mesh(mesh), m_grid(grid), m_checkpoint(grid.checkpoint()) {}
+    ~CutBackup() {
+        if (!m_done)
+            m_grid.rollback(m_checkpoint);
+        // m_mesh restores itself unless committed.
+    }
+    CutBackup(const CutBackup&) = delete;
+    CutBackup& operator=(const CutBackup&) = delete;
+    void commit() {
+        m_mesh.commit();
+        m_grid.release(m_checkpoint);
+        m_done = true;
+    }
+
+private:
+    TetMeshBackup m_mesh;
+    TetGrid& m_grid;
+    TetGrid::Checkpoint m_checkpoint;
+    bool m_done = false;
+};
+
+Status cancelledAt(CutStage stage) {
+    return Status::error(std::string("cut cancelled before stage '") + cutStageName(stage) + "', mesh unchanged");
+}
+
+/// Step 3: the selection, with its counts and the per-tet schemes entered in the change list.
+CutSelection selectStep(const TetMesh& mesh, const SweepSurface& sweep, const IntersectedEdges& crossed,
+                        const CutOptions& options, double meanEdge, CutResult& result) {
+    SelectOptions select;
+    const bool hybrid = options.method == CutMethod::Hybrid;
+    select.allowCutNodes = hybrid;
+    select.d = hybrid ? options.d * meanEdge : 0.0;
+    select.minEdgeFraction = options.minEdgeFraction;
+    CutSelection selection = selectCutNodes(mesh, sweep, crossed, select);
+    CutStats& stats = result.stats;
+    CutChanges& changes = result.changes;
+    stats.cutNodes = static_cast<int>(selection.cutNodes.size());
+    stats.cutEdges = static_cast<int>(selection.cutEdges.size());
+    stats.maxCutNodeDistance = selection.maxCutNodeDistance;
+    changes.tetScheme.reserve(selection.tets.size());
+    for (const TetCut& tc : selection.tets) {
+        ++stats.schemeCount[static_cast<int>(tc.scheme)];
+        changes.tetScheme.emplace_back(tc.tet, tc.scheme);
+    }
+    std::sort(changes.tetScheme.begin(), changes.tetScheme.end());
+    changes.cutNodes = selection.cutNodes;
+    return selection;
+}
+
+/// Cut edges that lie on the mesh boundary before the cut: their split points keep their
+/// place when relaxing, as boundary cut nodes do, so the body's shape and volume are kept.
+std::vector<std::uint64_t> boundaryCutEdges(const TetMesh& mesh, const CutSelection& selection) {
+    std::vector<std::uint64_t> keys;
+    for (const EdgeCrossing& e : selection.cutEdges)
+        if (isBoundaryEdge(mesh, e.a, e.b))
+            keys.push_back(edgeKey(e.a, e.b));
+    return keys;
+}
+
+/// Every node on the sweep after steps 4-5: cut nodes, split points, their copies, and the
+/// points placed on the sweep inside partially cut tets (sorted, unique).
+std::vector<int> nodesOnCut(const CutSelection& selection, const Decomposition& decomposition,
+                            const CutChanges& changes) {
+    std::vector<int> nodes = selection.cutNodes;
+    for (const auto& [key, n] : decomposition.edgePoint)
+        nodes.push_back(n);
+    for (const auto& [orig, copy] : changes.duplicatedNodes)
+        nodes.push_back(copy);
+    nodes.insert(nodes.end(), decomposition.sweepPoints.begin(), decomposition.sweepPoints.end());
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    return nodes;
+}
+
+/// Step 6: snapping (section 4.5); the tets around moved nodes are re-registered in the grid.
+void snapStep(TetMesh& mesh, TetGrid& grid, const SweepSurface& sweep, const CutOptions& options,
+              const std::vector<int>& boundaryCutNodes, CutResult& result) {
+    SnapOptions snap;
+    snap.qualityFloor = options.snapQualityFloor;
+    const SnapResult snapped = snapNodes(mesh, sweep, result.changes, boundaryCutNodes, snap);
+    result.stats.snappedNodes = snapped.snapped;
+    result.stats.refusedSnaps = snapped.refused;
+    result.stats.maxCutNodeDistance = snapped.maxDistanceAfter;
+    // Tets around moved nodes may have grown out of their grid cells.
+    for (int n : result.changes.cutNodes)
+        for (int t : mesh.nodeTets(n))
+            grid.insert(mesh, t);
+    for (const auto& [orig, copy] : result.changes.duplicatedNodes)
+        for (int t : mesh.nodeTets(copy))
+            grid.insert(mesh, t);
+}
+
+/// Step 7: relaxation (section 4.6) with the boundary cut nodes and boundary split points
+/// fixed. Returns the moved nodes.
+std::vector<int> relaxStep(TetMesh& mesh, const SweepSurface& sweep, const CutOptions& options,
+                           std::vector<int> fixed, const std::vector<std::uint64_t>& boundaryEdges,
+                           const Decomposition& decomposition, CutResult& result) {
+    for (std::uint64_t key : boundaryEdges)
+        fixed.push_back(decomposition.edgePoint.at(key));
+    RelaxOptions relax;
+    relax.steps = options.relaxSteps;
+    relax.wSpring = options.wSpring;
+    relax.wParticle = options.wParticle;
+    relax.rings = options.relaxRings;
+    relax.damping = options.relaxDamping;
+    RelaxResult relaxed = relaxNodes(mesh, sweep, result.changes, fixed, relax);
+    result.stats.relaxedMoves = relaxed.acceptedMoves;
+    result.stats.rejectedRelaxMoves = relaxed.rejectedMoves;
+    return std::move(relaxed.movedNodes);
+}
+
+/// The change list's remaining entries: modified tets once, and every node whose incident
+/// tets changed (new, modified or re-attached tets, and the tets around moved nodes, whose
+/// rest volumes changed). Tets around moved nodes are re-registered in the grid.
+void finishChangeList(TetMesh& mesh, TetGrid& grid, const std::vector<int>& moved, CutChanges& changes) {
+    std::sort(changes.modifiedTets.begin(), changes.modifiedTets.end());
+    changes.modifiedTets.erase(std::unique(changes.modifiedTets.begin(), changes.modifiedTets.end()),
+                               changes.modifiedTets.end());
+    std::unordered_set<int> touched;
+    for (int t : changes.modifiedTets)
+        touched.insert(mesh.tet(t).begin(), mesh.tet(t).end());
+    for (int t = changes.firstNewTet; t < mesh.tetCount(); ++t)
+        touched.insert(mesh.tet(t).begin(), mesh.tet(t).end());
+    for (const auto& [orig, copy] : changes.duplicatedNodes)
+        touched.insert(orig);
+    for (int n : moved)
+        for (int t : mesh.nodeTets(n)) {
+            touched.insert(mesh.tet(t).begin(), mesh.tet(t).end());
+            grid.insert(mesh, t);
+        }
+    changes.touchedNodes.assign(touched.begin(), touched.end());
+    std::sort(changes.touchedNodes.begin(), changes.touchedNodes.end());
 }
 
 } // namespace
+
+const char* cutStageName(CutStage stage) {
+    switch (stage) {
+    case CutStage::Intersect: return "intersect";
+    case CutStage::Select: return "select";
+    case CutStage::Decompose: return "decompose";
+    case CutStage::Snap: return "snap";
+    case CutStage::Relax: return "relax";
+    case CutStage::RestState: return "rest state";
+    case CutStage::Surface: return "surface";
+    }
+    return "?";
+}
+
+Status validateCutOptions(const CutOptions& o) {
+    const auto range = [](const char* name, double lo, double hi, double value, bool openLo = false) {
+        return std::string(name) + " must be in " + (openLo ? "(" : "[") + formatNumber(lo) + ", " +
+               formatNumber(hi) + "], got " + formatNumber(value);
+    };
+    if (!std::isfinite(o.d) || o.d < 0 || o.d > CutLimits::kMaxD)
+        return Status::error(range("d (a fraction of the mean edge length)", 0, CutLimits::kMaxD, o.d));
+    if (!(o.faceNodeAdvantage >= 0) || o.faceNodeAdvantage > CutLimits::kMaxFaceNodeAdvantage)
+        return Status::error(range("faceNodeAdvantage", 0, CutLimits::kMaxFaceNodeAdvantage, o.faceNodeAdvantage));
+    if (!(o.minEdgeFraction > 0) || o.minEdgeFraction > CutLimits::kMaxMinEdgeFraction)
+        return Status::error(range("minEdgeFraction", 0, CutLimits::kMaxMinEdgeFraction, o.minEdgeFraction, true));
+    if (!(o.snapQualityFloor >= 0) || o.snapQualityFloor > 1)
+        return Status::error(range("snapQualityFloor", 0, 1, o.snapQualityFloor));
+    if (o.relaxSteps < 0)
+        return Status::error("relaxation steps must be >= 0, got " + std::to_string(o.relaxSteps));
+    if (o.relaxRings < 1 || o.relaxRings > CutLimits::kMaxRelaxRings)
+        return Status::error(range("relaxation rings", 1, CutLimits::kMaxRelaxRings, o.relaxRings));
+    if (!(o.relaxDamping > 0) || !std::isfinite(o.relaxDamping))
+        return Status::error("relaxation damping must be > 0, got " + formatNumber(o.relaxDamping));
+    if (!(o.wSpring >= 0) || !(o.wParticle >= 0) || !std::isfinite(o.wSpring) || !std::isfinite(o.wParticle))
+        return Status::error("relaxation weights must be >= 0, got w_spring " + formatNumber(o.wSpring) +
+                             " and w_particle " + formatNumber(o.wParticle));
+    if (!(o.density > 0) || !std::isfinite(o.density))
+        return Status::error("density must be > 0, got " + formatNumber(o.density));
+    return Status::success();
+}
 
 CutStats& CutStats::operator+=(const CutStats& c) {
     crossedEdges += c.crossedEdges;
@@ -62,105 +244,61 @@ HybridCutter::HybridCutter(TetMesh& mesh) : m_mesh(mesh) {
     m_meanEdge = resect::meanEdgeLength(mesh);
 }
 
+HybridCutter::HybridCutter(const HybridCutter& other, TetMesh& mesh)
+    : m_mesh(mesh), m_grid(other.m_grid), m_meanEdge(other.m_meanEdge) {
+    mesh.reserve(mesh.nodeCount() + mesh.nodeCount() / 4 + 1024, mesh.tetCount() + mesh.tetCount() / 4 + 4096);
+}
+
 void HybridCutter::refreshSpatialIndex() { m_grid.build(m_mesh); }
 
-Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, CutResult& result) {
-    if (!std::isfinite(options.d) || options.d < 0 || options.d > 0.5)
-        return Status::error("d must be in [0, 0.5] (a fraction of the mean edge length), got " +
-                             std::to_string(options.d));
-    if (options.relaxSteps < 0 || options.relaxRings < 1 || options.relaxRings > 5 || !(options.relaxDamping > 0) ||
-        !(options.wSpring >= 0) || !(options.wParticle >= 0))
-        return Status::error("relaxation needs steps >= 0, rings in [1, 5], damping > 0 and weights >= 0");
-    if (!(options.faceNodeAdvantage >= 0) || options.faceNodeAdvantage > 100)
-        return Status::error("faceNodeAdvantage must be in [0, 100]");
-    if (!(options.minEdgeFraction > 0) || options.minEdgeFraction > 0.01)
-        return Status::error("minEdgeFraction must be in (0, 0.01]");
+Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, CutResult& result,
+                         const CutStageCallback& proceed) {
+    if (Status s = validateCutOptions(options); !s.ok())
+        return s;
     if (sweep.triangles().empty())
         return Status::error("empty sweep surface");
     result = {};
     CutStats& stats = result.stats;
     CutChanges& changes = result.changes;
-    const int nodesBefore = m_mesh.nodeCount();
-    const int tetsBefore = m_mesh.tetCount();
-    changes.firstNewNode = nodesBefore;
-    changes.firstNewTet = tetsBefore;
-    const auto start = std::chrono::steady_clock::now();
+    changes.firstNewNode = m_mesh.nodeCount();
+    changes.firstNewTet = m_mesh.tetCount();
+    const auto start = Clock::now();
+    const auto stage = [&](CutStage s) { return !proceed || proceed(s); };
+    CutBackup backup(m_mesh, m_grid);
 
-    auto t0 = std::chrono::steady_clock::now();
+    // Step 2 (section 4.3): the edges the sweep crosses.
+    if (!stage(CutStage::Intersect))
+        return cancelledAt(CutStage::Intersect);
+    auto t0 = Clock::now();
     const IntersectedEdges crossed = intersectEdges(m_mesh, m_grid, sweep);
     stats.timeMs.intersect = msSince(t0);
     stats.crossedEdges = static_cast<int>(crossed.edges.size());
     stats.discardedEdges = crossed.discardedEdges;
 
-    t0 = std::chrono::steady_clock::now();
-    SelectOptions select;
-    const bool hybrid = options.method == CutMethod::Hybrid;
-    select.allowCutNodes = hybrid;
-    select.d = hybrid ? options.d * m_meanEdge : 0.0;
-    select.minEdgeFraction = options.minEdgeFraction;
-    const CutSelection selection = selectCutNodes(m_mesh, sweep, crossed, select);
+    // Step 3 (section 4.3): cut nodes, cut edges, per-tet codes.
+    if (!stage(CutStage::Select))
+        return cancelledAt(CutStage::Select);
+    t0 = Clock::now();
+    const CutSelection selection = selectStep(m_mesh, sweep, crossed, options, m_meanEdge, result);
     stats.timeMs.select = msSince(t0);
-    stats.cutNodes = static_cast<int>(selection.cutNodes.size());
-    stats.cutEdges = static_cast<int>(selection.cutEdges.size());
-    stats.maxCutNodeDistance = selection.maxCutNodeDistance;
-    changes.tetScheme.reserve(selection.tets.size());
-    for (const TetCut& tc : selection.tets) {
-        ++stats.schemeCount[static_cast<int>(tc.scheme)];
-        changes.tetScheme.emplace_back(tc.tet, tc.scheme);
-    }
-    std::sort(changes.tetScheme.begin(), changes.tetScheme.end());
-    changes.cutNodes = selection.cutNodes;
-
-    // Keep what is needed to roll back: the nodes of every tet that may change.
-    std::unordered_set<int> mayChange;
-    for (const TetCut& tc : selection.tets)
-        mayChange.insert(tc.tet);
-    for (int n : selection.cutNodes)
-        mayChange.insert(m_mesh.nodeTets(n).begin(), m_mesh.nodeTets(n).end());
-    std::vector<std::pair<int, Tet>> backup;
-    backup.reserve(mayChange.size());
-    for (int t : mayChange)
-        backup.push_back({t, m_mesh.tet(t)});
-    const auto rollback = [&] {
-        for (const auto& [t, q] : backup)
-            m_mesh.replaceTet(t, q);
-        m_mesh.truncate(nodesBefore, tetsBefore);
-    };
-
-    // Cut nodes, and cut edges, on the boundary before the cut: they keep their place when
-    // snapping and relaxing, so the body's shape and volume are kept.
+    // What snapping and relaxation keep in place, read before the mesh changes.
     const bool moves = options.snap || options.relaxSteps > 0;
-    const std::vector<int> surfaceCutNodes = moves ? boundaryNodesAmong(m_mesh, selection.cutNodes) : std::vector<int>{};
-    std::vector<std::uint64_t> surfaceCutEdges;
-    if (options.relaxSteps > 0) {
-        std::vector<int> faceScratch, edgeScratch;
-        for (const EdgeCrossing& e : selection.cutEdges) {
-            m_mesh.edgeTets(e.a, e.b, edgeScratch);
-            bool boundary = false;
-            for (int t : edgeScratch)
-                for (int v : m_mesh.tet(t)) {
-                    if (v == e.a || v == e.b)
-                        continue;
-                    m_mesh.faceTets(e.a, e.b, v, faceScratch);
-                    boundary = boundary || faceScratch.size() == 1;
-                }
-            if (boundary)
-                surfaceCutEdges.push_back(edgeKey(e.a, e.b));
-        }
-    }
+    const std::vector<int> boundaryCutNodes = moves ? boundaryNodesAmong(m_mesh, selection.cutNodes) : std::vector<int>{};
+    const std::vector<std::uint64_t> boundaryEdges =
+        options.relaxSteps > 0 ? boundaryCutEdges(m_mesh, selection) : std::vector<std::uint64_t>{};
 
-    t0 = std::chrono::steady_clock::now();
+    // Steps 4-5 (section 4.4): decomposition and separation.
+    if (!stage(CutStage::Decompose))
+        return cancelledAt(CutStage::Decompose);
+    t0 = Clock::now();
     DecomposeOptions decompose;
-    decompose.symmetricFaces = hybrid && options.triangulation == FaceTriangulation::Enhanced;
+    decompose.symmetricFaces = options.method == CutMethod::Hybrid && options.triangulation == FaceTriangulation::Enhanced;
     decompose.sweep = &sweep;
     decompose.faceNodeAdvantage = options.faceNodeAdvantage;
     Decomposition decomposition;
-    if (Status s = decomposeTets(m_mesh, selection, decompose, decomposition, changes); !s.ok()) {
-        rollback();
+    if (Status s = decomposeTets(m_mesh, selection, decompose, decomposition, changes); !s.ok())
         return Status::error("cut failed, mesh unchanged: " + s.message());
-    }
     const Separation separation = separate(m_mesh, selection, decomposition, changes);
-    std::vector<int> relaxedNodes;
     stats.timeMs.decompose = msSince(t0);
     changes.tetSide = decomposition.tetSide;
     stats.decomposedTets = decomposition.decomposedTets;
@@ -168,93 +306,47 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
     stats.faceNodes = decomposition.faceNodes;
     stats.separatedTets = separation.separatedTets;
     stats.duplicatedNodes = separation.duplicatedNodes;
+    changes.cutSurfaceNodes = nodesOnCut(selection, decomposition, changes);
 
-    // Nodes on the cut (needed by relaxation and by the change list): cut nodes, split points,
-    // their copies, and the points placed on the sweep inside partially cut tets.
-    changes.cutSurfaceNodes = selection.cutNodes;
-    for (const auto& [key, n] : decomposition.edgePoint)
-        changes.cutSurfaceNodes.push_back(n);
-    for (const auto& [orig, copy] : changes.duplicatedNodes)
-        changes.cutSurfaceNodes.push_back(copy);
-    for (int n : decomposition.sweepPoints)
-        changes.cutSurfaceNodes.push_back(n);
-    std::sort(changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end());
-    changes.cutSurfaceNodes.erase(std::unique(changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end()),
-                                  changes.cutSurfaceNodes.end());
-
+    // Step 6 (section 4.5): snapping.
+    if (!stage(CutStage::Snap))
+        return cancelledAt(CutStage::Snap);
     if (options.snap && !changes.cutNodes.empty()) {
-        t0 = std::chrono::steady_clock::now();
-        SnapOptions snap;
-        snap.qualityFloor = options.snapQualityFloor;
-        const SnapResult snapped = snapNodes(m_mesh, sweep, changes, surfaceCutNodes, snap);
-        stats.snappedNodes = snapped.snapped;
-        stats.refusedSnaps = snapped.refused;
-        stats.maxCutNodeDistance = snapped.maxDistanceAfter;
-        // Tets around moved nodes may have grown out of their grid cells.
-        for (int n : changes.cutNodes)
-            for (int t : m_mesh.nodeTets(n))
-                m_grid.insert(m_mesh, t);
-        for (const auto& [orig, copy] : changes.duplicatedNodes)
-            for (int t : m_mesh.nodeTets(copy))
-                m_grid.insert(m_mesh, t);
+        t0 = Clock::now();
+        snapStep(m_mesh, m_grid, sweep, options, boundaryCutNodes, result);
         stats.timeMs.snap = msSince(t0);
     }
 
+    // Step 7 (section 4.6): relaxation.
+    if (!stage(CutStage::Relax))
+        return cancelledAt(CutStage::Relax);
+    std::vector<int> moved;
     if (options.relaxSteps > 0) {
-        t0 = std::chrono::steady_clock::now();
-        std::vector<int> fixed = surfaceCutNodes;
-        for (std::uint64_t key : surfaceCutEdges)
-            fixed.push_back(decomposition.edgePoint.at(key));
-        RelaxOptions relax;
-        relax.steps = options.relaxSteps;
-        relax.wSpring = options.wSpring;
-        relax.wParticle = options.wParticle;
-        relax.rings = options.relaxRings;
-        relax.damping = options.relaxDamping;
-        const RelaxResult relaxed = relaxNodes(m_mesh, sweep, changes, fixed, relax);
-        stats.relaxedMoves = relaxed.acceptedMoves;
-        stats.rejectedRelaxMoves = relaxed.rejectedMoves;
-        relaxedNodes = relaxed.movedNodes;
+        t0 = Clock::now();
+        moved = relaxStep(m_mesh, sweep, options, boundaryCutNodes, boundaryEdges, decomposition, result);
         stats.timeMs.relax = msSince(t0);
     }
-
-    // Change list: modified tets once, nodes whose tets changed.
-    std::sort(changes.modifiedTets.begin(), changes.modifiedTets.end());
-    changes.modifiedTets.erase(std::unique(changes.modifiedTets.begin(), changes.modifiedTets.end()),
-                               changes.modifiedTets.end());
-    std::unordered_set<int> touched;
-    for (int t : changes.modifiedTets)
-        touched.insert(m_mesh.tet(t).begin(), m_mesh.tet(t).end());
-    for (int t = tetsBefore; t < m_mesh.tetCount(); ++t)
-        touched.insert(m_mesh.tet(t).begin(), m_mesh.tet(t).end());
-    for (const auto& [orig, copy] : changes.duplicatedNodes)
-        touched.insert(orig);
-    // Nodes moved by snapping or relaxation change their neighbours' rest volumes too.
-    std::vector<int> moved = relaxedNodes;
     if (options.snap) {
         moved.insert(moved.end(), changes.cutNodes.begin(), changes.cutNodes.end());
         for (const auto& [orig, copy] : changes.duplicatedNodes)
             moved.push_back(copy);
     }
-    for (int n : moved)
-        for (int t : m_mesh.nodeTets(n)) {
-            touched.insert(m_mesh.tet(t).begin(), m_mesh.tet(t).end());
-            m_grid.insert(m_mesh, t);
-        }
-    changes.touchedNodes.assign(touched.begin(), touched.end());
-    std::sort(changes.touchedNodes.begin(), changes.touchedNodes.end());
 
-    // Rest state (section 4.7): masses by Eq. 3 for every node whose tets changed.
-    t0 = std::chrono::steady_clock::now();
+    // Step 8 (section 4.7): rest state, masses by Eq. 3 for every node whose tets changed.
+    if (!stage(CutStage::RestState))
+        return cancelledAt(CutStage::RestState);
+    finishChangeList(m_mesh, m_grid, moved, changes);
+    t0 = Clock::now();
     updateMasses(m_mesh, changes.touchedNodes, options.density);
     stats.timeMs.update = msSince(t0);
 
-    for (int t = tetsBefore; t < m_mesh.tetCount(); ++t)
+    for (int t = changes.firstNewTet; t < m_mesh.tetCount(); ++t)
         m_grid.insert(m_mesh, t);
-    stats.addedTets = m_mesh.tetCount() - tetsBefore;
-    stats.addedNodes = m_mesh.nodeCount() - nodesBefore;
+    stats.addedTets = m_mesh.tetCount() - changes.firstNewTet;
+    stats.addedNodes = m_mesh.nodeCount() - changes.firstNewNode;
     stats.touchedTets = static_cast<int>(crossed.candidateTets.size() + stats.addedTets);
     stats.timeMs.total = msSince(start);
+    backup.commit();
     return Status::success();
 }
 

@@ -11,35 +11,61 @@
 #include "core/status.h"
 #include "core/sweep/sweep_surface.h"
 
+#include <functional>
+
 namespace resect {
 
 enum class CutMethod { Hybrid, Subdivision };
 enum class FaceTriangulation { Standard, Enhanced };
 
+/// Accepted ranges of the CutOptions fields (validateCutOptions checks them; its messages
+/// print these constants).
+struct CutLimits {
+    static constexpr double kMaxD = 0.5;                  ///< d in [0, kMaxD] mean edge lengths
+    static constexpr double kMaxFaceNodeAdvantage = 100;  ///< faceNodeAdvantage in [0, this]
+    static constexpr double kMaxMinEdgeFraction = 0.01;   ///< minEdgeFraction in (0, this]
+    static constexpr int kMaxRelaxRings = 5;              ///< relaxRings in [1, this]
+};
+
 struct CutOptions {
     CutMethod method = CutMethod::Hybrid;
     FaceTriangulation triangulation = FaceTriangulation::Enhanced;
-    /// Cut-node threshold as a fraction of the mean edge length (the paper: one fifth).
+    /// Cut-node threshold as a fraction of the mean edge length (the paper: one fifth);
+    /// dimensionless, in [0, CutLimits::kMaxD].
     double d = 0.2;
     /// Enhanced faces: how much better a face node's triangles must be than the better
     /// diagonal's for the face node to be used (0: always, the paper's plain symmetric rule;
-    /// see decompose_tets.h).
+    /// see decompose_tets.h); dimensionless, in [0, CutLimits::kMaxFaceNodeAdvantage].
     double faceNodeAdvantage = 1.5;
     /// Node snapping (section 4.5): move cut nodes onto the sweep.
     bool snap = false;
-    /// A snap may not push a tet's radius ratio below min(floor, its ratio before).
+    /// A snap may not push a tet's radius ratio below min(floor, its ratio before); in [0, 1].
     double snapQualityFloor = 0.05;
-    /// Relaxation (section 4.6, relax_nodes.h): steps (0: off), weights, neighbourhood.
+    /// Relaxation (section 4.6, relax_nodes.h): steps (0: off, >= 0), weights (>= 0),
+    /// neighbourhood rings (in [1, CutLimits::kMaxRelaxRings]), damping (> 0).
     int relaxSteps = 0;
     double wSpring = 1.0;
     double wParticle = 0.2;
     int relaxRings = 2;
     double relaxDamping = 10.0;
-    /// Density for the masses of Eq. 3, updated for every node whose tets changed.
+    /// Density (g/mm^3, > 0) for the masses of Eq. 3, updated for every node whose tets
+    /// changed. Tissue::cut uses its material's density instead.
     double density = Material{}.density;
-    /// Smallest fraction of an edge a split may cut off (see select_cut_nodes.h).
+    /// Smallest fraction of an edge a split may cut off (see select_cut_nodes.h); in
+    /// (0, CutLimits::kMaxMinEdgeFraction].
     double minEdgeFraction = 1e-6;
 };
+
+/// Checks every field against its documented range; the message names the field, the range
+/// and the value.
+Status validateCutOptions(const CutOptions& options);
+
+/// The stages of applying a cut that can still be cancelled, in order: HybridCutter's (section
+/// 4.1), then the embedded surface's (Tissue::cut).
+enum class CutStage { Intersect, Select, Decompose, Snap, Relax, RestState, Surface };
+const char* cutStageName(CutStage stage);
+/// Called before each stage; returning false cancels the cut, which is then undone exactly.
+using CutStageCallback = std::function<bool(CutStage)>;
 
 /// Counts and timings of one cut (the "cut" object of the cut report, DESIGN.md).
 struct CutStats {
@@ -80,13 +106,23 @@ public:
     /// Keeps a reference to the mesh; builds the spatial grid and the mean edge length
     /// (the unit of d) once, in O(mesh).
     explicit HybridCutter(TetMesh& mesh);
+    /// A cutter for `mesh`, a copy of other's mesh: the same grid and unit of d, so that both
+    /// cut identically from here on.
+    HybridCutter(const HybridCutter& other, TetMesh& mesh);
+    HybridCutter(const HybridCutter&) = delete;
+    HybridCutter& operator=(const HybridCutter&) = delete;
 
     /// Rebuilds the spatial grid after positions changed (e.g. after simulation steps).
     void refreshSpatialIndex();
     double meanEdgeLength() const { return m_meanEdge; }
+    /// The spatial grid (a caller that may undo a cut after it succeeded takes a checkpoint).
+    TetGrid& grid() { return m_grid; }
 
-    /// Cuts the mesh along the sweep. On failure the mesh is left exactly as it was.
-    Status cut(const SweepSurface& sweep, const CutOptions& options, CutResult& result);
+    /// Cuts the mesh along the sweep, the steps of section 4.1 in order. On failure, or when
+    /// `proceed` cancels before a stage, the mesh and the grid are left exactly as they were
+    /// (TetMeshBackup). Cost: in proportion to the tets near the sweep.
+    Status cut(const SweepSurface& sweep, const CutOptions& options, CutResult& result,
+               const CutStageCallback& proceed = {});
 
 private:
     TetMesh& m_mesh;

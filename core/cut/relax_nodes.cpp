@@ -177,10 +177,8 @@ RelaxResult relaxNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChange
                 continue;
             const double before = cachedMinQuality(group);
             const Vec3 oldRef = mesh.ref(n), oldPos = mesh.pos(n);
-            for (int m : group) {
-                mesh.referencePositions()[m] = targetRef;
-                mesh.positions()[m] = target;
-            }
+            for (int m : group)
+                mesh.setNodePosition(m, targetRef, target);
             bool ok = true;
             for (int m : group)
                 for (int t : mesh.nodeTets(m)) {
@@ -192,10 +190,8 @@ RelaxResult relaxNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChange
             if (ok && minQualityAround(mesh, group, &moved) < before)
                 ok = false;
             if (!ok) {
-                for (int m : group) {
-                    mesh.referencePositions()[m] = oldRef;
-                    mesh.positions()[m] = oldPos;
-                }
+                for (int m : group)
+                    mesh.setNodePosition(m, oldRef, oldPos);
                 ++result.rejectedMoves;
             } else {
                 for (const auto& [t, q] : moved)

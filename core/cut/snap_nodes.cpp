@@ -106,10 +106,8 @@ SnapResult snapNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChanges&
             result.maxDistanceAfter = std::max(result.maxDistanceAfter, target.distance);
             continue;
         }
-        for (int v : group) {
-            mesh.referencePositions()[v] = newRef;
-            mesh.positions()[v] = newPos;
-        }
+        for (int v : group)
+            mesh.setNodePosition(v, newRef, newPos);
         ++result.snapped;
     }
     return result;

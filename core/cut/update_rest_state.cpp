@@ -5,12 +5,11 @@
 namespace resect {
 
 void updateMasses(TetMesh& mesh, const std::vector<int>& nodes, double density) {
-    auto mass = mesh.masses();
     for (int n : nodes) {
         double m = 0;
         for (int t : mesh.nodeTets(n))
             m += std::abs(mesh.referenceVolume(t)) / 4.0;
-        mass[n] = density * m;
+        mesh.setMass(n, density * m);
     }
 }
 

@@ -39,13 +39,16 @@ Status EmbeddedSurface::cut(const TetMesh& mesh, const CutChanges& changes, cons
         return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     };
     EmbeddedCut c;
+    // The surface cut first: it is the one step that may fail, and it changes nothing then.
+    // Re-binding only reads the positions of the vertices it re-binds (never moved by the
+    // surface cut) and the new vertices are bound after it.
     auto t0 = Clock::now();
-    c.reboundVertices = m_binding.rebind(mesh, changes, m_surface.positions, sweep);
-    c.rebindMs = ms(t0);
-    t0 = Clock::now();
     if (Status s = cutSurface(m_surface, nullptr, sweep, c.surface); !s.ok())
         return s;
     c.cutMs = ms(t0);
+    t0 = Clock::now();
+    c.reboundVertices = m_binding.rebind(mesh, changes, m_surface.positions, sweep);
+    c.rebindMs = ms(t0);
     t0 = Clock::now();
     const SurfaceCut& sc = c.surface;
     m_binding.bindNewVertices(mesh, m_surface.positions, sc.firstNewVertex, sc.sourceEdge, sc.side, changes, sweep);

@@ -1,14 +1,11 @@
 #pragma once
 // The embedded high-resolution surface as one object (section 5): the surface, its binding to
-// the tets and the cut that keeps both in step. Call update() whenever the tets moved (every
-// frame) and cut() right after each tet cut, with the cut's change list:
+// the tets and the cut that keeps both in step. Tissue (core/tissue/tissue.h) owns one and
+// sequences it with the tet cut: update() whenever the tets moved, cut() right after each tet
+// cut, with the cut's change list.
 //
-//     embedded.update(mesh);            // positions before the cut
-//     cutter.cut(sweep, options, result);
-//     embedded.cut(mesh, result.changes, sweep);
-//
-// cut() re-binds the vertices the tet cut touched (SurfaceBinding::rebind), cuts the surface
-// along the sweep and closes it (cutSurface), and binds the new vertices on their side
+// cut() cuts the surface along the sweep and closes it (cutSurface), re-binds the vertices
+// the tet cut touched (SurfaceBinding::rebind), and binds the new vertices on their side
 // (SurfaceBinding::bindNewVertices).
 
 #include "core/embed/binding.h"
@@ -33,8 +30,7 @@ public:
     void update(const TetMesh& mesh);
 
     /// After a tet cut (see above). The surface's positions must be those update() gave
-    /// before the tet cut. On error the surface is unchanged (its binding may have been
-    /// refreshed for vertices the tet cut touched, which is still consistent).
+    /// before the tet cut. On error the surface and its binding are unchanged.
     Status cut(const TetMesh& mesh, const CutChanges& changes, const SweepSurface& sweep, EmbeddedCut* stats = nullptr);
 
     bool empty() const { return m_surface.triangles.empty(); }

@@ -33,6 +33,8 @@ void TetGrid::forCells(const Eigen::Array3i& lo, const Eigen::Array3i& hi, const
 
 void TetGrid::build(const TetMesh& mesh, double cellSize) {
     m_extra.clear();
+    m_insertLog.clear();
+    m_openCheckpoints = 0;
     m_start.clear();
     m_items.clear();
     if (mesh.empty()) {
@@ -82,8 +84,35 @@ void TetGrid::insert(const TetMesh& mesh, int tet) {
     if (empty())
         return;
     const Eigen::AlignedBox3d box = tetBox(mesh, tet);
-    forCells(cellOf(box.min()), cellOf(box.max()),
-             [&](const Eigen::Array3i& c) { m_extra[cellIndex(c)].push_back(tet); });
+    forCells(cellOf(box.min()), cellOf(box.max()), [&](const Eigen::Array3i& c) {
+        const std::int64_t cell = cellIndex(c);
+        m_extra[cell].push_back(tet);
+        if (m_openCheckpoints > 0)
+            m_insertLog.push_back(cell);
+    });
+}
+
+TetGrid::Checkpoint TetGrid::checkpoint() {
+    ++m_openCheckpoints;
+    return {m_insertLog.size()};
+}
+
+void TetGrid::rollback(const Checkpoint& checkpoint) {
+    while (m_insertLog.size() > checkpoint.logSize) {
+        const auto it = m_extra.find(m_insertLog.back());
+        m_insertLog.pop_back();
+        if (it == m_extra.end())
+            continue;  // dropped by build()
+        it->second.pop_back();
+        if (it->second.empty())
+            m_extra.erase(it);
+    }
+    release(checkpoint);
+}
+
+void TetGrid::release(const Checkpoint& checkpoint) {
+    if (m_openCheckpoints > 0 && --m_openCheckpoints == 0)
+        m_insertLog.clear();
 }
 
 void TetGrid::collect(std::int64_t cell, std::vector<int>& out) const {

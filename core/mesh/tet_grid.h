@@ -24,6 +24,16 @@ public:
     void build(const TetMesh& mesh, double cellSize = 0);
     /// Registers a tet appended after build() (current positions).
     void insert(const TetMesh& mesh, int tet);
+
+    /// Undo of insert() calls, for an edit that may be rolled back (a cut): checkpoint()
+    /// starts recording inserts, rollback() removes the ones made since, release() keeps them.
+    /// Checkpoints nest (LIFO). build() drops every checkpoint.
+    struct Checkpoint {
+        std::size_t logSize = 0;
+    };
+    Checkpoint checkpoint();
+    void rollback(const Checkpoint& checkpoint);
+    void release(const Checkpoint& checkpoint);
     bool empty() const { return m_cellSize <= 0; }
     double cellSize() const { return m_cellSize; }
 
@@ -48,6 +58,8 @@ private:
     std::vector<int> m_start;   ///< CSR offsets per cell (size cells + 1)
     std::vector<int> m_items;   ///< tets per cell
     std::unordered_map<std::int64_t, std::vector<int>> m_extra;  ///< tets inserted later
+    std::vector<std::int64_t> m_insertLog;  ///< cells appended to since the first open checkpoint
+    int m_openCheckpoints = 0;
     mutable std::vector<std::uint32_t> m_stamp;
     mutable std::uint32_t m_epoch = 0;
 };

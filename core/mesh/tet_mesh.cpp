@@ -1,5 +1,7 @@
 #include "core/mesh/tet_mesh.h"
 
+#include "core/mesh/tet_mesh_backup.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -39,12 +41,16 @@ int TetMesh::addNode(const Vec3& referencePosition, const Vec3& currentPosition)
 }
 
 int TetMesh::addTet(const Tet& t) {
+    willChangeNodesOf(t);
     m_tets.push_back(t);
     attach(tetCount() - 1);
     return tetCount() - 1;
 }
 
 void TetMesh::replaceTet(int t, const Tet& nodes) {
+    willChangeTet(t);
+    willChangeNodesOf(m_tets[t]);
+    willChangeNodesOf(nodes);
     detach(t);
     m_tets[t] = nodes;
     attach(t);
@@ -60,8 +66,10 @@ void TetMesh::reserve(int nodes, int tets) {
 }
 
 void TetMesh::truncate(int nodes, int tets) {
-    for (int t = tetCount() - 1; t >= tets; --t)
+    for (int t = tetCount() - 1; t >= tets; --t) {
+        willChangeNodesOf(m_tets[t]);
         detach(t);
+    }
     m_tets.resize(std::min<std::size_t>(m_tets.size(), tets));
     const std::size_t n = std::min<std::size_t>(m_ref.size(), nodes);
     for (std::size_t i = n; i < m_nodeTets.size(); ++i)
@@ -71,6 +79,34 @@ void TetMesh::truncate(int nodes, int tets) {
     m_vel.resize(n);
     m_mass.resize(n);
     m_nodeTets.resize(n);
+}
+
+void TetMesh::setNodePosition(int n, const Vec3& referencePosition, const Vec3& currentPosition) {
+    willChangeNode(n);
+    m_ref[n] = referencePosition;
+    m_pos[n] = currentPosition;
+}
+
+void TetMesh::setMass(int n, double mass) {
+    willChangeNode(n);
+    m_mass[n] = mass;
+}
+
+void TetMesh::willChangeTet(int t) {
+    for (TetMeshBackup* b : m_backups.open)
+        b->saveTet(t);
+}
+
+void TetMesh::willChangeNode(int n) {
+    for (TetMeshBackup* b : m_backups.open)
+        b->saveNode(n);
+}
+
+void TetMesh::willChangeNodesOf(const Tet& t) {
+    if (m_backups.open.empty())
+        return;
+    for (int v : t)
+        willChangeNode(v);
 }
 
 void TetMesh::attach(int t) {

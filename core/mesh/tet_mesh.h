@@ -22,6 +22,8 @@
 
 namespace resect {
 
+class TetMeshBackup;
+
 using Vec3 = Eigen::Vector3d;
 using Tet = std::array<int, 4>;
 using Tri = std::array<int, 3>;
@@ -74,9 +76,14 @@ public:
     /// to a duplicated node).
     void replaceTet(int t, const Tet& nodes);
     void reserve(int nodes, int tets);
-    /// Removes the trailing tets and nodes beyond the given counts (used to roll back a failed
-    /// edit). The remaining tets must not refer to removed nodes.
+    /// Removes the trailing tets and nodes beyond the given counts. The remaining tets must
+    /// not refer to removed nodes. (To undo an edit exactly, use a TetMeshBackup.)
     void truncate(int nodes, int tets);
+
+    // --- node edits that an open TetMeshBackup records (tet_mesh_backup.h) ---
+    /// Moves node n in both configurations.
+    void setNodePosition(int n, const Vec3& referencePosition, const Vec3& currentPosition);
+    void setMass(int n, double mass);
 
     // --- local adjacency ---
     /// Tets incident to node n, in no particular order.
@@ -97,8 +104,23 @@ public:
     double totalReferenceVolume() const;
 
 private:
+    friend class TetMeshBackup;
     void attach(int t);
     void detach(int t);
+    /// Tells every open backup that tet t / node n is about to change.
+    void willChangeTet(int t);
+    void willChangeNode(int n);
+    void willChangeNodesOf(const Tet& t);
+
+    /// Open backups, innermost last. Not copied with the mesh: a copy has none.
+    struct Backups {
+        std::vector<TetMeshBackup*> open;
+        Backups() = default;
+        Backups(const Backups&) {}
+        Backups(Backups&&) noexcept {}
+        Backups& operator=(const Backups&) { return *this; }
+        Backups& operator=(Backups&&) noexcept { return *this; }
+    };
 
     std::vector<Vec3> m_ref;
     std::vector<Vec3> m_pos;
@@ -106,6 +128,7 @@ private:
     std::vector<double> m_mass;
     std::vector<Tet> m_tets;
     std::vector<std::vector<int>> m_nodeTets;
+    Backups m_backups;
 };
 
 /// Signed volume of the tet (a, b, c, d): det[b-a, c-a, d-a] / 6.

@@ -83,6 +83,20 @@ std::vector<BoundaryFace> boundaryFaces(const TetMesh& mesh) {
     return result;
 }
 
+bool isBoundaryEdge(const TetMesh& mesh, int a, int b) {
+    std::vector<int> around, scratch;
+    mesh.edgeTets(a, b, around);
+    for (int t : around)
+        for (int v : mesh.tet(t)) {
+            if (v == a || v == b)
+                continue;
+            mesh.faceTets(a, b, v, scratch);
+            if (scratch.size() == 1)
+                return true;
+        }
+    return false;
+}
+
 bool isBoundaryNode(const TetMesh& mesh, int n) {
     std::vector<int> scratch;
     for (int t : mesh.nodeTets(n)) {

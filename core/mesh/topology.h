@@ -31,6 +31,9 @@ std::vector<BoundaryFace> boundaryFaces(const TetMesh& mesh);
 /// True if node n has an incident face that belongs to one tet only (O(valence^2)).
 bool isBoundaryNode(const TetMesh& mesh, int n);
 
+/// True if the edge (a, b) has an incident face that belongs to one tet only (O(valence)).
+bool isBoundaryEdge(const TetMesh& mesh, int a, int b);
+
 /// Connected components: tets are connected when they share a node (nodes separated by a
 /// cut are distinct, so each piece of a cut mesh is one component).
 struct Components {

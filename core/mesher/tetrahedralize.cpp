@@ -88,12 +88,6 @@ Status cancelledStatus() {
     return Status::error("meshing cancelled");
 }
 
-std::string formatNumber(double x) {
-    std::ostringstream s;
-    s << x;
-    return s.str();
-}
-
 /// Estimated tet count for edge length h: the enclosed volume over the mean tet volume,
 /// or, for thin shapes whose volume says little, the number of equilateral facets of edge
 /// h covering the surface area A, 4 A / (sqrt(3) h^2) (each is the face of one tet).

@@ -49,13 +49,17 @@ EffectRegistry EffectRegistry::withBuiltins() {
             const auto& [lo, hi] = *s.fixed.box;
             if (!lo.allFinite() || !hi.allFinite() || (lo.array() > hi.array()).any())
                 return Status::error("fixed: the box must be finite with lo <= hi");
-        } else if (s.fixed.nodes.empty()) {
+        }
+        if (s.fixed.empty()) {
             return Status::error("fixed: give anchored nodes or a box");
         }
         for (int n : s.fixed.nodes)
             if (n < 0 || n >= mesh.nodeCount())
                 return Status::error("fixed: node " + std::to_string(n) + " is not in the mesh");
-        out = std::make_unique<FixedNodesEffect>(mesh, s.fixed);
+        Anchors anchors;
+        if (Status st = Anchors::create(mesh, s.fixed, anchors); !st.ok())
+            return Status::error("fixed: " + st.message());
+        out = std::make_unique<FixedNodesEffect>(mesh, std::move(anchors));
         return Status::success();
     });
     r.add("tool-contact", [](const TetMesh& mesh, const Material&, const EffectSettings& s,

@@ -28,7 +28,7 @@ namespace resect {
 struct EffectSettings {
     DeformationTerms deformation;        ///< deformation: which terms
     Vec3 gravity{0, 0, -9810};           ///< gravity: mm/s^2
-    FixedSelection fixed;                ///< fixed: nodes or a box (one is required)
+    FixedSelection fixed;                ///< fixed: nodes and/or a box (anchors.h; not empty)
     Tool tool;                           ///< tool-contact: polyline and radius (required)
     std::optional<double> damping;       ///< damping: 1/s (default Material::damping, > 0)
     std::map<std::string, double> extra; ///< parameters of registered effects

@@ -39,7 +39,7 @@ ReplayPlan boxPlan(bool withTool) {
         plan.simulation.integrator = Integrator::BackwardEuler;
         plan.simulation.dt = 2e-4;  // s, about ten times the stable explicit step
     }
-    plan.effectSettings.fixed.box = std::array<Vec3, 2>{Vec3::Constant(-1), Vec3(5, 5, 0.001)};
+    plan.anchors.box = std::array<Vec3, 2>{Vec3::Constant(-1), Vec3(5, 5, 0.001)};
     plan.duration = 0.02;
     return plan;
 }

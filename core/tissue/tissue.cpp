@@ -1,0 +1,230 @@
+#include "core/tissue/tissue.h"
+
+#include "core/mesh/masses.h"
+#include "core/mesh/tet_mesh_backup.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace resect {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+} // namespace
+
+Tissue::Tissue()
+    : m_mesh(std::make_unique<TetMesh>()), m_cutter(std::make_unique<HybridCutter>(*m_mesh)),
+      m_pieces(std::make_unique<PiecesCache>()) {}
+
+Tissue::~Tissue() {
+    // The simulator refers to the mesh: it goes first.
+    m_sim.reset();
+}
+
+Tissue::Tissue(Tissue&&) noexcept = default;
+Tissue& Tissue::operator=(Tissue&& other) noexcept {
+    if (this != &other) {
+        m_sim.reset();
+        m_cutter.reset();
+        m_mesh = std::move(other.m_mesh);
+        m_cutter = std::move(other.m_cutter);
+        m_surface = std::move(other.m_surface);
+        m_material = other.m_material;
+        m_anchors = std::move(other.m_anchors);
+        m_schemes = std::move(other.m_schemes);
+        m_cuts = other.m_cuts;
+        m_sim = std::move(other.m_sim);
+        m_stepsSeen = other.m_stepsSeen;
+        m_indexStale = other.m_indexStale;
+        m_surfaceStale = other.m_surfaceStale;
+        m_pieces = std::move(other.m_pieces);
+    }
+    return *this;
+}
+
+Tissue::Tissue(const Tissue& other)
+    : m_mesh(std::make_unique<TetMesh>(*other.m_mesh)),
+      m_cutter(std::make_unique<HybridCutter>(*other.m_cutter, *m_mesh)), m_surface(other.m_surface),
+      m_material(other.m_material), m_anchors(other.m_anchors), m_schemes(other.m_schemes), m_cuts(other.m_cuts),
+      m_pieces(std::make_unique<PiecesCache>()) {
+    const bool stepped = other.m_sim && other.m_sim->stepsTaken() != other.m_stepsSeen;
+    m_indexStale = other.m_indexStale || stepped;
+    m_surfaceStale = other.m_surfaceStale || stepped;
+    std::lock_guard lock(other.m_pieces->mutex);
+    m_pieces->components = other.m_pieces->components;
+}
+
+Status Tissue::create(TetMesh mesh, TriangleSurface surface, const Material& material, const FixedSelection& anchors,
+                      Tissue& out) {
+    if (mesh.empty())
+        return Status::error("the tissue has no tets");
+    const auto masses = mesh.masses();
+    if (std::all_of(masses.begin(), masses.end(), [](double m) { return m == 0; }))
+        computeLumpedMasses(mesh, material.density);
+    Tissue t;
+    t.m_material = material;
+    if (Status s = Anchors::create(mesh, anchors, t.m_anchors); !s.ok())
+        return s;
+    if (!surface.triangles.empty())
+        if (Status s = t.m_surface.bind(mesh, std::move(surface)); !s.ok())
+            return Status::error("binding the surface: " + s.message());
+    t.m_schemes.assign(mesh.tetCount(), Scheme::None);
+    *t.m_mesh = std::move(mesh);
+    t.m_cutter = std::make_unique<HybridCutter>(*t.m_mesh);
+    out = std::move(t);
+    return Status::success();
+}
+
+const Components& Tissue::pieces() const {
+    std::lock_guard lock(m_pieces->mutex);
+    if (!m_pieces->components)
+        m_pieces->components = connectedComponents(*m_mesh);
+    return *m_pieces->components;
+}
+
+void Tissue::noticeSteps() {
+    if (m_sim && m_sim->stepsTaken() != m_stepsSeen) {
+        m_stepsSeen = m_sim->stepsTaken();
+        m_indexStale = m_surfaceStale = true;
+    }
+}
+
+void Tissue::followPositions() {
+    noticeSteps();
+    if (m_indexStale) {
+        m_cutter->refreshSpatialIndex();
+        m_indexStale = false;
+    }
+    updateSurface();
+}
+
+void Tissue::updateSurface() {
+    noticeSteps();
+    if (!m_surfaceStale)
+        return;
+    m_surface.update(*m_mesh);
+    m_surfaceStale = false;
+}
+
+void Tissue::updateSchemes(const CutChanges& changes) {
+    m_schemes.resize(m_mesh->tetCount(), Scheme::None);
+    for (int t : changes.modifiedTets)
+        if (const Scheme s = changes.schemeOf(t); s != Scheme::None)
+            m_schemes[t] = s;
+    for (std::size_t i = 0; i < changes.parentOfNewTet.size(); ++i) {
+        const int parent = changes.parentOfNewTet[i];
+        const Scheme s = changes.schemeOf(parent);
+        m_schemes[changes.firstNewTet + static_cast<int>(i)] = s != Scheme::None ? s : m_schemes[parent];
+    }
+}
+
+Status Tissue::cut(const SweepSurface& sweep, const CutOptions& requested, TissueCut* out,
+                   const CutStageCallback& proceed) {
+    if (empty())
+        return Status::error("the tissue has no tets");
+    CutOptions options = requested;
+    options.density = m_material.density;
+    const auto start = Clock::now();
+    TissueCut result;
+
+    // 1. The index and the surface follow the tets (derived data: refreshing it is no change).
+    auto t0 = Clock::now();
+    followPositions();
+    result.surfaceMs = msSince(t0);
+
+    // 2-3 run under a backup of the mesh and the index: undone unless both succeed.
+    TetMeshBackup meshBackup(*m_mesh);
+    TetGrid& grid = m_cutter->grid();
+    const TetGrid::Checkpoint checkpoint = grid.checkpoint();
+    const auto undo = [&](Status status) {
+        grid.rollback(checkpoint);
+        meshBackup.restore();
+        return status;
+    };
+
+    // 2. The tets (HybridCutter restores them itself when it fails).
+    CutResult cut;
+    if (Status s = m_cutter->cut(sweep, options, cut, proceed); !s.ok())
+        return undo(s);
+
+    // 3. The embedded surface: cut and closed (the one step here that may fail), then re-bound.
+    if (!m_surface.empty()) {
+        if (proceed && !proceed(CutStage::Surface))
+            return undo(Status::error("cut cancelled before stage 'surface', tissue unchanged"));
+        t0 = Clock::now();
+        if (Status s = m_surface.cut(*m_mesh, cut.changes, sweep, &result.surface); !s.ok())
+            return undo(Status::error("cutting the surface: " + s.message() + " (tissue unchanged)"));
+        result.surfaceMs += msSince(t0);
+    }
+    grid.release(checkpoint);
+    meshBackup.commit();
+    // Snapping and relaxation moved tet nodes: the surface follows them at the next look.
+    m_surfaceStale = true;
+
+    // 4. The simulation follows locally.
+    if (m_sim) {
+        t0 = Clock::now();
+        m_sim->applyCut(cut.changes);
+        result.simulationMs = msSince(t0);
+    }
+
+    // 5. Anchors, schemes, pieces.
+    m_anchors.applyCut(*m_mesh, cut.changes);
+    updateSchemes(cut.changes);
+    {
+        std::lock_guard lock(m_pieces->mutex);
+        m_pieces->components.reset();
+    }
+    ++m_cuts;
+
+    result.tets = cut.stats;
+    result.changes = std::move(cut.changes);
+    result.totalMs = msSince(start);
+    if (out)
+        *out = std::move(result);
+    return Status::success();
+}
+
+Status Tissue::startSimulation(const SimulationSetup& setup) {
+    stopSimulation();
+    if (empty())
+        return Status::error("the tissue has no tets");
+    if (!setup.settings.fixed.empty())
+        return Status::error("the simulation's fixed effect holds the tissue's anchors: give them to Tissue::create, "
+                             "not in the effect settings");
+    auto sim = std::make_unique<Simulator>(*m_mesh, m_material, setup.options);
+    EffectSettings settings = setup.settings;
+    settings.fixed = m_anchors.selection();
+    for (const std::string& name : setup.effects)
+        if (Status s = sim->addEffect(name, settings); !s.ok())
+            return Status::error("effect '" + name + "': " + s.message());
+    m_sim = std::move(sim);
+    m_stepsSeen = 0;
+    return Status::success();
+}
+
+void Tissue::stopSimulation() {
+    noticeSteps();
+    m_sim.reset();
+    m_stepsSeen = 0;
+}
+
+Status Tissue::step(double h) {
+    if (!m_sim)
+        return Status::error("no simulation is running");
+    return m_sim->step(h);
+}
+
+TetMesh Tissue::takeMesh() && {
+    m_sim.reset();
+    TetMesh mesh = std::move(*m_mesh);
+    *this = Tissue();
+    return mesh;
+}
+
+} // namespace resect

@@ -1,0 +1,145 @@
+#pragma once
+// Tissue: the one owner of a tissue's state and of applying a cut to it (STYLE.md 13).
+//
+// A tissue is the coarse tet mesh that is cut and simulated, its spatial index and the unit of
+// the threshold d (HybridCutter), the embedded high-resolution surface and its binding
+// (section 5), the anchored nodes (the scene's fixed regions), the Figure-4 scheme that
+// produced every tet, its pieces, and, when one runs, the simulator with the scene's effects.
+// The CLI, replay, the accuracy study, the benchmarks and the studio all cut through cut();
+// none of them sequences the steps itself.
+//
+// cut() applies one sweep, in this order:
+//   1. the spatial index is rebuilt if the tets moved since it was built (simulation steps),
+//      and the surface follows the tets' current positions (EmbeddedSurface::update);
+//   2. the tets are cut (HybridCutter: section 4.1's steps, masses by Eq. 3);
+//   3. the embedded surface is cut and closed (section 5.1, 5.2) and its vertices re-bound;
+//   4. the simulator's effects follow the change list locally (Simulator::applyCut);
+//   5. anchors, schemes and pieces follow.
+// Every stage that can fail (2 and 3) runs before the ones that cannot be undone, under a
+// backup of the mesh and the spatial index: on failure or cancellation the tissue is exactly
+// as it was (the mesh bit-identical, node adjacency order included; the surface, its binding,
+// the simulator, anchors and schemes untouched). Cost: in proportion to what the cut touches
+// (pieces are counted on demand).
+
+#include "core/cut/hybrid_cutter.h"
+#include "core/embed/embedded_surface.h"
+#include "core/mesh/material.h"
+#include "core/mesh/topology.h"
+#include "core/sim/anchors.h"
+#include "core/sim/simulator.h"
+#include "core/status.h"
+
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace resect {
+
+/// What one Tissue::cut did.
+struct TissueCut {
+    CutStats tets;           ///< the tet cut's counts and stage times (HybridCutter)
+    EmbeddedCut surface;     ///< the surface cut's counts and stage times (zeros without one)
+    double surfaceMs = 0;    ///< surface update, cut and re-binding together
+    double simulationMs = 0; ///< the simulator's effects following the change list
+    double totalMs = 0;      ///< the whole cut, every stage
+    CutChanges changes;      ///< what changed (for views and other followers)
+};
+
+/// What a simulation of the tissue runs: the integrator and step, the effects by name (in
+/// order, EffectRegistry) and their parameters. The `fixed` effect holds the tissue's anchors:
+/// settings.fixed must be left empty.
+struct SimulationSetup {
+    SimulatorOptions options;
+    std::vector<std::string> effects;
+    EffectSettings settings;
+};
+
+class Tissue {
+public:
+    Tissue();
+    ~Tissue();
+    Tissue(Tissue&&) noexcept;
+    Tissue& operator=(Tissue&&) noexcept;
+    /// A deep copy of everything but the simulation (a copy has none): the copy cuts exactly
+    /// as the original would (same spatial index, same unit of d).
+    explicit Tissue(const Tissue& other);
+    Tissue& operator=(const Tissue&) = delete;
+
+    /// A tissue from a tet mesh (masses by Eq. 3 from material.density if every mass is
+    /// zero), the embedded surface (may be empty; positions in the mesh's current
+    /// configuration) and the anchored nodes (may be empty). Errors name what is wrong; `out`
+    /// is unchanged then.
+    static Status create(TetMesh mesh, TriangleSurface surface, const Material& material,
+                         const FixedSelection& anchors, Tissue& out);
+
+    bool empty() const { return !m_mesh || m_mesh->empty(); }
+    const TetMesh& mesh() const { return *m_mesh; }
+    /// The embedded surface; its positions are those of the last updateSurface() (or cut).
+    const EmbeddedSurface& surface() const { return m_surface; }
+    const Material& material() const { return m_material; }
+    const Anchors& anchors() const { return m_anchors; }
+    /// Per tet: the scheme (Figure 4) of the cut that produced it; None for tets of the input.
+    const std::vector<Scheme>& schemes() const { return m_schemes; }
+    /// Connected components of the tets (computed on the first call after a cut; safe to call
+    /// from several threads on a shared const tissue).
+    const Components& pieces() const;
+    /// The unit of d: the mean edge length of the tissue as created.
+    double meanEdgeLength() const { return m_cutter->meanEdgeLength(); }
+    /// Cuts applied since create().
+    int cutCount() const { return m_cuts; }
+
+    /// Applies one sweep to the tissue (see the top of this file). `out` (optional) receives
+    /// counts, stage times and the change list; `proceed` is asked before each stage and may
+    /// cancel. CutOptions::density is replaced by the material's density.
+    Status cut(const SweepSurface& sweep, const CutOptions& options, TissueCut* out = nullptr,
+               const CutStageCallback& proceed = {});
+
+    /// Starts a simulation of the tissue (replacing any running one). Errors name the effect.
+    Status startSimulation(const SimulationSetup& setup);
+    void stopSimulation();
+    bool isSimulating() const { return m_sim != nullptr; }
+    /// The running simulation, or null. Steps taken through it are noticed by the next cut
+    /// (which then rebuilds the spatial index) and by updateSurface().
+    Simulator* simulator() { return m_sim.get(); }
+    const Simulator* simulator() const { return m_sim.get(); }
+    /// One simulation step of h seconds (Simulator::step).
+    Status step(double h);
+
+    /// Moves the embedded surface with the tets (call before drawing or saving it).
+    void updateSurface();
+
+    /// Gives the mesh away (the tissue is empty afterwards): for callers that continue with
+    /// the mesh alone (e.g. a study that perturbs and simulates it).
+    TetMesh takeMesh() &&;
+
+private:
+    /// Steps the simulator has taken when the index and the surface last followed the tets.
+    /// Notes simulation steps taken since the last look (the index and surface are then stale).
+    void noticeSteps();
+    /// Step 1 of cut(): rebuilds the spatial index and updates the surface where stale.
+    void followPositions();
+    /// Step 5 of cut(): the scheme of every tet the cut produced or changed.
+    void updateSchemes(const CutChanges& changes);
+
+    std::unique_ptr<TetMesh> m_mesh;        // on the heap: the cutter and simulator refer to it
+    std::unique_ptr<HybridCutter> m_cutter;
+    EmbeddedSurface m_surface;
+    Material m_material;
+    Anchors m_anchors;
+    std::vector<Scheme> m_schemes;
+    int m_cuts = 0;
+    std::unique_ptr<Simulator> m_sim;
+    int m_stepsSeen = 0;        ///< simulator steps when the tissue last looked
+    bool m_indexStale = false;  ///< the tets moved since the spatial index was built
+    bool m_surfaceStale = true; ///< the tets moved since the surface last followed them
+
+    struct PiecesCache {
+        std::mutex mutex;
+        std::optional<Components> components;
+    };
+    std::unique_ptr<PiecesCache> m_pieces;
+};
+
+} // namespace resect
