@@ -398,7 +398,8 @@ TriangleSurface boxSurface(int n, double triangles) {
     TriangleSurface s = sampleSurface(Sample::Myoma, std::max(0.01, triangles / 40000.0));
     const auto [lo, hi] = boundingBox(s.positions);
     const Vec3 centre = 0.5 * (lo + hi);
-    const double scale = 0.8 * n / (hi - lo).maxCoeff();
+    constexpr double kWidthFraction = 0.8;  // of the box the surface spans
+    const double scale = kWidthFraction * n / (hi - lo).maxCoeff();
     for (Vec3& p : s.positions)
         p = Vec3::Constant(0.5 * n) + scale * (p - centre);
     return s;

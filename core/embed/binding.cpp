@@ -45,9 +45,17 @@ void SurfaceBinding::bindVertex(const TetMesh& mesh, int v, const Vec3& p, const
     }
 }
 
-Status SurfaceBinding::bind(const TetMesh& mesh, const TriangleSurface& surface) {
+Status SurfaceBinding::bind(const TetMesh& mesh, const TriangleSurface& surface, const BindingTolerances& tolerances) {
     if (mesh.empty())
         return Status::error("cannot bind a surface to an empty tet mesh");
+    const BindingTolerances& tol = tolerances;
+    if (!(tol.inside >= 0 && tol.inside <= 1e-3) || !(tol.nearOutside >= tol.inside && tol.nearOutside <= 1) ||
+        !(tol.maxSearchCells >= 1 && tol.maxSearchCells <= 1024))
+        return Status::error("binding tolerances out of range: inside " + formatNumber(tol.inside) +
+                             " (expected [0, 0.001]), nearOutside " + formatNumber(tol.nearOutside) +
+                             " (expected [inside, 1]), maxSearchCells " + formatNumber(tol.maxSearchCells) +
+                             " (expected [1, 1024])");
+    m_tolerances = tol;
     for (const Vec3& p : surface.positions)
         if (!p.allFinite())
             return Status::error("surface has a non-finite vertex");
@@ -62,20 +70,18 @@ Status SurfaceBinding::bind(const TetMesh& mesh, const TriangleSurface& surface)
     grid.build(mesh);
     std::vector<int> candidates;
     const double cell = grid.cellSize();
-    constexpr double kTolerance = 1e-9;
-    constexpr double kNearOutside = 0.25;  ///< a weight down to -0.25: within a quarter tet
     for (int v = 0; v < n; ++v) {
         const Vec3& p = surface.positions[v];
         // Grow the search box until a containing tet (or, far out, any tet) is found.
-        for (double r = 0.0; r <= 64 * cell; r = r == 0 ? cell : 2 * r) {
+        for (double r = 0.0; r <= tol.maxSearchCells * cell; r = r == 0 ? cell : 2 * r) {
             Eigen::AlignedBox3d box(p - Vec3::Constant(r), p + Vec3::Constant(r));
             grid.query(box, candidates);
             bindVertex(mesh, v, p, candidates);
-            if (m_tet[v] >= 0 && smallest(m_weights[v]) >= -kTolerance)
+            if (m_tet[v] >= 0 && smallest(m_weights[v]) >= -tol.inside)
                 break;
             // Slightly outside the coarse mesh (its boundary lies inside the curved surface):
             // the tet found in the vertex's own cell is near enough.
-            if (m_tet[v] >= 0 && smallest(m_weights[v]) >= -kNearOutside)
+            if (m_tet[v] >= 0 && smallest(m_weights[v]) >= -tol.nearOutside)
                 break;
             if (m_tet[v] >= 0 && r >= 2 * cell)
                 break;  // outside the mesh: the nearest tet found is kept
@@ -85,7 +91,7 @@ Status SurfaceBinding::bind(const TetMesh& mesh, const TriangleSurface& surface)
             std::iota(all.begin(), all.end(), 0);
             bindVertex(mesh, v, p, all);
         }
-        if (smallest(m_weights[v]) < -kTolerance)
+        if (smallest(m_weights[v]) < -tol.inside)
             ++m_outside;
     }
     m_verticesOfTet.assign(mesh.tetCount(), {});

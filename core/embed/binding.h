@@ -15,12 +15,26 @@
 
 namespace resect {
 
+/// Where bind() stops looking for a vertex's tet. Weights are barycentric (dimensionless; a
+/// vertex is inside a tet when its smallest weight is >= 0).
+struct BindingTolerances {
+    /// A tet whose smallest weight is >= -inside contains the vertex (rounding); in [0, 1e-3].
+    double inside = 1e-9;
+    /// A vertex slightly outside the coarse mesh (its boundary lies inside the curved
+    /// surface) keeps a tet found in its own cell whose smallest weight is >= -nearOutside
+    /// (0.25: within about a quarter of the tet); in [inside, 1].
+    double nearOutside = 0.25;
+    /// The search box grows (doubling, from one grid cell) up to this many cells before all
+    /// tets are scanned; in [1, 1024].
+    double maxSearchCells = 64;
+};
+
 class SurfaceBinding {
 public:
     /// Binds every vertex of `surface` (positions in the mesh's current configuration) to a
-    /// tet, found through a spatial grid (not a scan of all tets). Fails only for an empty
-    /// mesh or non-finite positions.
-    Status bind(const TetMesh& mesh, const TriangleSurface& surface);
+    /// tet, found through a spatial grid (not a scan of all tets). Fails for an empty mesh,
+    /// non-finite positions or tolerances outside their ranges.
+    Status bind(const TetMesh& mesh, const TriangleSurface& surface, const BindingTolerances& tolerances = {});
 
     /// Positions of every vertex from the tets' current positions (out: #V positions).
     /// Streams through memory: vertices are processed in tet order.
@@ -48,6 +62,7 @@ public:
     const std::array<double, 4>& weightsOf(int vertex) const { return m_weights[vertex]; }
     /// Vertices bound to a tet they lie outside of (just outside the coarse mesh): count.
     int outsideCount() const { return m_outside; }
+    const BindingTolerances& tolerances() const { return m_tolerances; }
 
 private:
     void bindVertex(const TetMesh& mesh, int v, const Vec3& p, const std::vector<int>& candidates);
@@ -58,6 +73,7 @@ private:
     std::vector<int> m_order;                       ///< vertices sorted by their tet
     std::vector<std::vector<int>> m_verticesOfTet;  ///< #tets vertex lists (for rebinding)
     int m_outside = 0;
+    BindingTolerances m_tolerances;
 };
 
 /// Barycentric coordinates (w0..w3, summing to 1) of p in the tet (current positions).

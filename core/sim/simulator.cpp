@@ -312,7 +312,8 @@ Status Simulator::step(double h) {
                        " integrator (stable estimate " + format(stable) + " s)";
             if (h <= stable)
                 message += ", which holds for small deformations: strongly deformed tissue "
-                           "needs a margin (0.8 x the estimate) or the implicit integrator";
+                           "needs a margin (" + format(kLargeDeformationMargin) +
+                           " x the estimate) or the implicit integrator";
         } else
             message += "the implicit step " + format(h) + " s did not stay bounded (" +
                        std::to_string(m_last.solverIterations) + " solver iterations)";

@@ -1,0 +1,338 @@
+// Tissue: the one path that applies a cut to the mesh, its embedded surface, its simulation,
+// its anchors, schemes and pieces (core/tissue/tissue.h). Checked on the polyp sample at three
+// scales: everything follows a cut; a cut cancelled before any stage leaves the tissue (and a
+// running simulation) bit-identical to one that never saw it; copies cut identically; a tissue
+// that moved is cut where it is now.
+#include "core/mesher/samples.h"
+#include "core/mesher/tetrahedralize.h"
+#include "core/sim/fixed_nodes_effect.h"
+#include "core/tissue/tissue.h"
+#include "tissue_snapshot.h"
+
+#include <QTest>
+
+#include <map>
+#include <set>
+
+using namespace resect;
+using resect::testing::TissueSnapshot;
+
+namespace {
+
+/// The polyp (20 mm tall, base at z = 0) and its surface, scaled.
+struct Inputs {
+    TetMesh mesh;
+    TriangleSurface surface;
+    double scale = 1;
+};
+
+const Inputs& polyp(double scale) {
+    static std::map<double, Inputs> cache;
+    auto it = cache.find(scale);
+    if (it != cache.end())
+        return it->second;
+    Inputs in;
+    in.scale = scale;
+    in.surface = sampleSurface(Sample::Polyp, 0.25);
+    TriangleSurface meshed = in.surface;
+    for (Vec3& p : meshed.positions)
+        p *= scale;
+    in.surface = meshed;
+    if (!tetrahedralize(meshed, MeshingOptions{}, in.mesh).ok())
+        qFatal("meshing the polyp failed");
+    return cache.emplace(scale, std::move(in)).first->second;
+}
+
+/// The base of the stalk (z in [-0.5, 1] mm), as anchors.
+FixedSelection baseAnchors(double scale) {
+    FixedSelection f;
+    f.box = std::array<Vec3, 2>{Vec3(-6, -6, -0.5) * scale, Vec3(6, 6, 1) * scale};
+    return f;
+}
+
+Tissue makeTissue(double scale, bool withSurface = true) {
+    const Inputs& in = polyp(scale);
+    Tissue t;
+    Material material;
+    const Status s = Tissue::create(in.mesh, withSurface ? in.surface : TriangleSurface{}, material,
+                                    baseAnchors(scale), t);
+    if (!s.ok())
+        qFatal("%s", s.message().c_str());
+    return t;
+}
+
+/// A slightly tilted plane at height z (mm, before scaling) across the whole polyp.
+SweepSurface planeAt(double z, double scale) {
+    SweepSurface sweep;
+    const Status s = SweepSurface::fromStartEnd({Vec3(-12, -12, z) * scale, Vec3(12, -12, z + 0.3) * scale},
+                                                {Vec3(-12, 12, z + 0.2) * scale, Vec3(12, 12, z + 0.5) * scale},
+                                                sweep);
+    if (!s.ok())
+        qFatal("bad sweep");
+    return sweep;
+}
+
+/// Deformation, gravity and the anchored base. The mass-spring model's equilibrium strain
+/// under gravity is g l / stiffness (Eq. 4: k = stiffness m / l^2), so gravity is scaled by
+/// 1 / scale to give the same sag at every scale.
+SimulationSetup sceneSetup(double scale = 1) {
+    SimulationSetup setup;
+    setup.effects = {"deformation", "gravity", "fixed"};
+    setup.settings.gravity /= scale;
+    setup.options.threads = 1;
+    return setup;
+}
+
+double totalMass(const TetMesh& m) {
+    double sum = 0;
+    for (double x : m.masses())
+        sum += x;
+    return sum;
+}
+
+} // namespace
+
+class TestTissue : public QObject {
+    Q_OBJECT
+private slots:
+    void cutFollowsEverything_data() {
+        QTest::addColumn<double>("scale");
+        QTest::newRow("1e-3") << 1e-3;
+        QTest::newRow("1") << 1.0;
+        QTest::newRow("1e3") << 1e3;
+    }
+    void cutFollowsEverything() {
+        QFETCH(double, scale);
+        Tissue tissue = makeTissue(scale);
+        QVERIFY(!tissue.anchors().empty());
+        QVERIFY(tissue.startSimulation(sceneSetup(scale)).ok());
+        const double dt = tissue.simulator()->timeStep();
+        for (int i = 0; i < 10; ++i)
+            QVERIFY(tissue.step(dt).ok());
+        tissue.updateSurface();
+        const int tetsBefore = tissue.mesh().tetCount();
+        const double massBefore = totalMass(tissue.mesh());
+        const double volumeBefore = tissue.mesh().totalReferenceVolume();
+        const double surfaceVolumeBefore = enclosedVolume(tissue.surface().surface());
+        QCOMPARE(tissue.pieces().count, 1);
+
+        TissueCut cut;
+        const Status s = tissue.cut(planeAt(15, scale), CutOptions{}, &cut);
+        QVERIFY2(s.ok(), s.message().c_str());
+        const TetMesh& mesh = tissue.mesh();
+        // Tets: the head is cut off, volume and mass (Eq. 3, updated locally) are conserved.
+        QCOMPARE(tissue.pieces().count, 2);
+        QCOMPARE(tissue.cutCount(), 1);
+        QCOMPARE(mesh.tetCount(), tetsBefore + cut.tets.addedTets);
+        QVERIFY(cut.tets.addedTets > 0);
+        QVERIFY(std::abs(mesh.totalReferenceVolume() - volumeBefore) <= 1e-12 * volumeBefore);
+        QVERIFY(std::abs(totalMass(mesh) - massBefore) <= 1e-12 * massBefore);
+        // Schemes: every tet the cut made carries the scheme of its parent's cut.
+        QCOMPARE(static_cast<int>(tissue.schemes().size()), mesh.tetCount());
+        for (int t = cut.changes.firstNewTet; t < mesh.tetCount(); ++t)
+            QVERIFY(tissue.schemes()[t] != Scheme::None);
+        // Surface: cut and closed with caps; the pieces enclose what the whole did.
+        QVERIFY(cut.surface.surface.capTriangles > 0);
+        QVERIFY(cut.surface.surface.splitEdges > 0);
+        const double surfaceVolumeAfter = enclosedVolume(tissue.surface().surface());
+        QVERIFY2(std::abs(surfaceVolumeAfter - surfaceVolumeBefore) <= 1e-9 * std::abs(surfaceVolumeBefore),
+                 qPrintable(QString("%1 -> %2").arg(surfaceVolumeBefore, 0, 'g', 17).arg(surfaceVolumeAfter, 0, 'g', 17)));
+        QCOMPARE(tissue.surface().binding().vertexCount(), tissue.surface().surface().vertexCount());
+        // Anchors: the tissue's and the fixed effect's are the same list.
+        const auto* fixed = dynamic_cast<const FixedNodesEffect*>(tissue.simulator()->findEffect("fixed"));
+        QVERIFY(fixed);
+        QCOMPARE(fixed->nodes(), tissue.anchors().nodes());
+        // Exactly one piece (the stalk) holds anchors.
+        const Components& pieces = tissue.pieces();
+        std::set<int> anchoredPieces;
+        for (int n : tissue.anchors().nodes())
+            anchoredPieces.insert(pieces.nodeComponent[n]);
+        QCOMPARE(static_cast<int>(anchoredPieces.size()), 1);
+        // The simulation goes on from where it was, with the cut's tets.
+        QCOMPARE(tissue.simulator()->stepsTaken(), 10);
+        for (int i = 0; i < 10; ++i)
+            QVERIFY(tissue.step(dt).ok());
+        for (int t = 0; t < mesh.tetCount(); ++t)
+            QVERIFY(mesh.currentVolume(t) > 0);
+    }
+
+    void anchorsFollowACutThroughThem() {
+        // A cut through the anchored base: both copies of every anchored cut node stay
+        // anchored, and the new nodes in the box are anchored.
+        Tissue tissue = makeTissue(1, false);
+        QVERIFY(tissue.startSimulation(sceneSetup()).ok());
+        TissueCut cut;
+        QVERIFY(tissue.cut(planeAt(0.4, 1), CutOptions{}, &cut).ok());
+        QVERIFY(!cut.changes.duplicatedNodes.empty());
+        int anchoredCopies = 0;
+        for (const auto& [orig, copy] : cut.changes.duplicatedNodes)
+            if (tissue.anchors().contains(orig)) {
+                QVERIFY(tissue.anchors().contains(copy));
+                ++anchoredCopies;
+            }
+        QVERIFY(anchoredCopies > 0);
+        const auto& box = *tissue.anchors().box();
+        for (int n = cut.changes.firstNewNode; n < tissue.mesh().nodeCount(); ++n) {
+            const Vec3& p = tissue.mesh().ref(n);
+            const bool inBox = (p.array() >= box[0].array()).all() && (p.array() <= box[1].array()).all();
+            if (inBox)
+                QVERIFY(tissue.anchors().contains(n));
+        }
+        const auto* fixed = dynamic_cast<const FixedNodesEffect*>(tissue.simulator()->findEffect("fixed"));
+        QCOMPARE(fixed->nodes(), tissue.anchors().nodes());
+    }
+
+    void cancelledCutChangesNothing_data() {
+        QTest::addColumn<int>("stage");
+        for (CutStage s : {CutStage::Intersect, CutStage::Select, CutStage::Decompose, CutStage::Snap,
+                           CutStage::Relax, CutStage::RestState, CutStage::Surface})
+            QTest::newRow(cutStageName(s)) << static_cast<int>(s);
+    }
+    void cancelledCutChangesNothing() {
+        // Two identical tissues, both simulating; one gets a cut cancelled before `stage`
+        // (the stages after Decompose cancel with the mesh already decomposed, snapped and
+        // relaxed, Surface with the tet cut complete). It must stay bit-identical to the
+        // other, and both must go on identically (simulation, then a real cut).
+        QFETCH(int, stage);
+        Tissue a = makeTissue(1), b = makeTissue(1);
+        QVERIFY(a.startSimulation(sceneSetup()).ok());
+        QVERIFY(b.startSimulation(sceneSetup()).ok());
+        const double dt = a.simulator()->timeStep();
+        for (int i = 0; i < 5; ++i) {
+            QVERIFY(a.step(dt).ok());
+            QVERIFY(b.step(dt).ok());
+        }
+        // Both refresh their index and surface the same way before a cut.
+        a.updateSurface();
+        b.updateSurface();
+        CutOptions options;
+        options.snap = true;
+        options.relaxSteps = 10;
+        const SweepSurface sweep = planeAt(15, 1);
+        std::vector<CutStage> asked;
+        const Status s = a.cut(sweep, options, nullptr, [&](CutStage s) {
+            asked.push_back(s);
+            return static_cast<int>(s) != stage;
+        });
+        QVERIFY(!s.ok());
+        QVERIFY2(s.message().find("cancelled") != std::string::npos, s.message().c_str());
+        QCOMPARE(static_cast<int>(asked.back()), stage);
+        QCOMPARE(static_cast<int>(asked.size()), stage + 1);  // every stage before was asked, in order
+        const TissueSnapshot after(a), untouched(b);
+        const QString diff = after.differenceTo(untouched);
+        QVERIFY2(diff.isEmpty(), qPrintable("changed by a cancelled cut: " + diff));
+        QCOMPARE(a.pieces().count, 1);
+
+        for (int i = 0; i < 5; ++i) {
+            QVERIFY(a.step(dt).ok());
+            QVERIFY(b.step(dt).ok());
+        }
+        TissueCut cutA, cutB;
+        QVERIFY(a.cut(sweep, options, &cutA).ok());
+        QVERIFY(b.cut(sweep, options, &cutB).ok());
+        QVERIFY2(TissueSnapshot(a).differenceTo(TissueSnapshot(b)).isEmpty(),
+                 qPrintable(TissueSnapshot(a).differenceTo(TissueSnapshot(b))));
+        QCOMPARE(cutA.tets.touchedTets, cutB.tets.touchedTets);
+        QCOMPARE(a.pieces().count, 2);
+    }
+
+    void copiesCutIdentically() {
+        // A copy has the same spatial index and unit of d: the same later cuts give the same
+        // tissue, down to the bits and the number of tets examined.
+        Tissue a = makeTissue(1);
+        QVERIFY(a.cut(planeAt(16, 1), CutOptions{}).ok());
+        Tissue b(a);
+        QVERIFY(!b.isSimulating());
+        QCOMPARE(b.meanEdgeLength(), a.meanEdgeLength());
+        CutOptions options;
+        options.snap = true;
+        options.relaxSteps = 5;
+        for (double z : {13.0, 8.0}) {
+            TissueCut ca, cb;
+            QVERIFY(a.cut(planeAt(z, 1), options, &ca).ok());
+            QVERIFY(b.cut(planeAt(z, 1), options, &cb).ok());
+            QCOMPARE(ca.tets.touchedTets, cb.tets.touchedTets);
+        }
+        const QString diff = TissueSnapshot(a).differenceTo(TissueSnapshot(b));
+        QVERIFY2(diff.isEmpty(), qPrintable(diff));
+        QCOMPARE(a.pieces().count, 4);
+    }
+
+    void aTissueThatMovedIsCutWhereItIs() {
+        // Under gravity with nothing anchored the polyp falls; a cut placed where it has
+        // fallen to must cut it as it would a tissue created there (the spatial index
+        // follows the simulation's steps).
+        const Inputs& in = polyp(1);
+        Tissue tissue;
+        QVERIFY(Tissue::create(in.mesh, {}, Material{}, {}, tissue).ok());
+        SimulationSetup setup;
+        setup.effects = {"deformation", "gravity"};
+        setup.options.threads = 1;
+        QVERIFY(tissue.startSimulation(setup).ok());
+        const double dt = tissue.simulator()->timeStep();
+        // t = 0.1 s: a fall of g t^2 / 2 = 49 mm, well below where the polyp was.
+        while (tissue.simulator()->time() < 0.1)
+            QVERIFY(tissue.step(dt).ok());
+        double top = -1e300;
+        for (const Vec3& p : tissue.mesh().positions())
+            top = std::max(top, p.z());
+        QVERIFY(top < -20);
+        const SweepSurface sweep = planeAt(top - 5, 1);
+        Tissue fresh;
+        QVERIFY(Tissue::create(tissue.mesh(), {}, Material{}, {}, fresh).ok());
+        TissueCut moved, created;
+        QVERIFY(tissue.cut(sweep, CutOptions{}, &moved).ok());
+        QVERIFY(fresh.cut(sweep, CutOptions{}, &created).ok());
+        QVERIFY(created.tets.crossedEdges > 0);
+        QCOMPARE(moved.tets.crossedEdges, created.tets.crossedEdges);
+        QCOMPARE(moved.tets.addedTets, created.tets.addedTets);
+        QCOMPARE(tissue.pieces().count, 2);
+    }
+
+    void refusals() {
+        Tissue empty;
+        QVERIFY(empty.empty());
+        Status s = empty.cut(planeAt(15, 1), CutOptions{});
+        QVERIFY(!s.ok());
+        QVERIFY2(s.message().find("no tets") != std::string::npos, s.message().c_str());
+        QVERIFY(!Tissue::create(TetMesh{}, {}, Material{}, {}, empty).ok());
+
+        FixedSelection bad;
+        bad.nodes = {0, 100000};
+        s = Tissue::create(polyp(1).mesh, {}, Material{}, bad, empty);
+        QVERIFY(!s.ok());
+        QVERIFY2(s.message().find("100000") != std::string::npos, s.message().c_str());
+        QVERIFY(empty.empty());  // unchanged on failure
+
+        Tissue tissue = makeTissue(1, false);
+        SimulationSetup setup = sceneSetup();
+        setup.settings.fixed.nodes = {0};
+        s = tissue.startSimulation(setup);
+        QVERIFY(!s.ok());
+        QVERIFY2(s.message().find("anchors") != std::string::npos, s.message().c_str());
+        QVERIFY(!tissue.isSimulating());
+        setup = sceneSetup();
+        setup.effects.push_back("no-such-effect");
+        QVERIFY(!tissue.startSimulation(setup).ok());
+        QVERIFY(!tissue.isSimulating());
+
+        CutOptions options;
+        options.d = 0.7;
+        s = tissue.cut(planeAt(15, 1), options);
+        QVERIFY(!s.ok());
+        QVERIFY2(s.message().find("[0, 0.5]") != std::string::npos, s.message().c_str());
+        QCOMPARE(tissue.cutCount(), 0);
+    }
+
+    void takeMeshLeavesAnEmptyTissue() {
+        Tissue tissue = makeTissue(1, false);
+        QVERIFY(tissue.cut(planeAt(15, 1), CutOptions{}).ok());
+        const int tets = tissue.mesh().tetCount();
+        const TetMesh mesh = std::move(tissue).takeMesh();
+        QCOMPARE(mesh.tetCount(), tets);
+        QVERIFY(tissue.empty());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestTissue)
+#include "test_tissue.moc"
