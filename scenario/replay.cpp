@@ -82,115 +82,146 @@ double resectedVolumeFraction(const Tissue& tissue) {
 
 } // namespace
 
-Status replay(ReplayPlan plan, ReplayOutcome& out, const ReplayProgress& progress) {
-    out = {};
-    out.tetsBefore = plan.mesh.tetCount();
+namespace {
 
-    // The tool starts withdrawn above the first pose of the first stroke that has poses.
-    const bool wantsTool = std::find(plan.effects.begin(), plan.effects.end(), "tool-contact") != plan.effects.end();
-    if (wantsTool)
-        for (const ReplayStroke& s : plan.strokes)
-            if (!s.tool.empty()) {
-                plan.effectSettings.tool.points = withdrawnTool(s.tool.front(), plan.mesh);
-                break;
-            }
+/// One replay in progress: the tissue with its simulation, the tool, the clock and progress.
+class ReplayRun {
+public:
+    ReplayRun(ReplayPlan& plan, ReplayOutcome& out, const ReplayProgress& progress)
+        : m_plan(plan), m_out(out), m_progress(progress) {}
 
-    Tissue tissue;
-    if (Status s = makeTissue(plan, tissue); !s.ok())
-        return s;
-    if (Status s = tissue.startSimulation(simulationSetup(plan)); !s.ok())
-        return s;
-    Simulator& sim = *tissue.simulator();
-    auto* tool = dynamic_cast<ToolContactEffect*>(sim.findEffect("tool-contact"));
+    /// The tissue and its simulation; the tool starts withdrawn above the first pose.
+    Status start() {
+        const auto& effects = m_plan.effects;
+        if (std::find(effects.begin(), effects.end(), "tool-contact") != effects.end())
+            for (const ReplayStroke& s : m_plan.strokes)
+                if (!s.tool.empty()) {
+                    m_plan.effectSettings.tool.points = withdrawnTool(s.tool.front(), m_plan.mesh);
+                    break;
+                }
+        if (Status s = makeTissue(m_plan, m_tissue); !s.ok())
+            return s;
+        if (Status s = m_tissue.startSimulation(simulationSetup(m_plan)); !s.ok())
+            return s;
+        m_sim = m_tissue.simulator();
+        m_tool = dynamic_cast<ToolContactEffect*>(m_sim->findEffect("tool-contact"));
+        m_total = m_plan.duration;
+        for (const ReplayStroke& s : m_plan.strokes)
+            if (m_tool && s.times.size() >= 2)
+                m_total += s.times.back() - s.times.front();
+        m_out.kineticInitial = m_out.kineticMax = m_sim->kineticEnergy();
+        return Status::success();
+    }
 
-    // Total simulated time, for progress.
-    double total = plan.duration;
-    for (const ReplayStroke& s : plan.strokes)
-        if (tool && s.times.size() >= 2)
-            total += s.times.back() - s.times.front();
-    double done = 0;
-    const auto report = [&](double t) { return !progress || progress(total > 0 ? std::min(1.0, t / total) : 1.0); };
+    /// One stroke: its cut, then (with tool contact and poses) the simulation over its time
+    /// span with the tool moving along it, after which the tool is withdrawn.
+    Status stroke(const ReplayStroke& stroke) {
+        TissueCut cut;
+        if (Status s = m_tissue.cut(stroke.sweep, m_plan.cut, &cut); !s.ok())
+            return Status::error(stroke.name + ": " + s.message());
+        m_out.cutTotals += cut.tets;
+        m_out.surfaceCapTriangles += cut.surface.surface.capTriangles;
+        if (m_tool && stroke.times.size() >= 2) {
+            const double t0 = stroke.times.front();
+            if (Status s = simulate(stroke.times.back() - t0, [&](double t) { return toolAt(stroke, t0 + t); }); !s.ok())
+                return s;
+            if (Status s = m_tool->setPose(withdrawnTool(stroke.tool.back(), m_tissue.mesh())); !s.ok())
+                return s;
+        }
+        return report(m_done) ? Status::success() : Status::error("cancelled");
+    }
 
-    out.kineticInitial = out.kineticMax = sim.kineticEnergy();
-    bool diverged = false;
-    // Runs the simulation for `span` seconds; `pose` gives the tool's points at a time.
-    const auto simulate = [&](double span, const std::function<std::vector<Vec3>(double)>& pose) -> Status {
-        if (span <= 0 || diverged)
+    /// Simulates `span` seconds; `pose` (optional) gives the tool's points at a time. A
+    /// divergence ends the simulation (recorded in the outcome), not the replay.
+    Status simulate(double span, const std::function<std::vector<Vec3>(double)>& pose) {
+        if (span <= 0 || m_diverged)
             return Status::success();
         // The stable estimate holds for small deformations; a tool pushing surface nodes by
         // projection deforms small elements strongly within a step, so an explicit
         // integrator at "stable" keeps the margin the simulator advises.
-        double dt = sim.timeStep();
-        if (plan.simulation.dt <= 0 && tool && isExplicit(plan.simulation.integrator))
+        double dt = m_sim->timeStep();
+        if (m_plan.simulation.dt <= 0 && m_tool && isExplicit(m_plan.simulation.integrator))
             dt *= kLargeDeformationMargin;
         if (!(dt > 0) || !std::isfinite(dt))
             return Status::error("the simulation has no usable time step");
         const long long steps = static_cast<long long>(std::ceil(span / dt - kStepCountSlack));
-        if (out.steps + steps > plan.maxSteps)
-            return Status::error("the scenario needs more than " + std::to_string(plan.maxSteps) +
+        if (m_out.steps + steps > m_plan.maxSteps)
+            return Status::error("the scenario needs more than " + std::to_string(m_plan.maxSteps) +
                                  " simulation steps at dt = " + formatNumber(dt) +
                                  " s: shorten the duration, or use a larger time step with the implicit integrator");
         const double h = span / static_cast<double>(steps);
         for (long long i = 0; i < steps; ++i) {
-            if (tool && pose)
-                if (Status s = tool->setPose(pose(i * h)); !s.ok())
+            if (m_tool && pose)
+                if (Status s = m_tool->setPose(pose(i * h)); !s.ok())
                     return s;
-            if (Status s = tissue.step(h); !s.ok()) {
-                out.finite = false;
-                out.failure = s.message();
-                diverged = true;
+            if (Status s = m_tissue.step(h); !s.ok()) {
+                m_out.finite = false;
+                m_out.failure = s.message();
+                m_diverged = true;
                 return Status::success();
             }
-            ++out.steps;
-            out.dt = h;
-            out.kineticMax = std::max(out.kineticMax, sim.lastStep().kineticEnergy);
-            out.maxSpeed = std::max(out.maxSpeed, sim.lastStep().maxSpeed);
-            if (i % kProgressInterval == 0 && !report(done + i * h))
+            ++m_out.steps;
+            m_out.dt = h;
+            m_out.kineticMax = std::max(m_out.kineticMax, m_sim->lastStep().kineticEnergy);
+            m_out.maxSpeed = std::max(m_out.maxSpeed, m_sim->lastStep().maxSpeed);
+            if (i % kProgressInterval == 0 && !report(m_done + i * h))
                 return Status::error("cancelled");
         }
-        done += span;
+        m_done += span;
         return Status::success();
-    };
-
-    for (const ReplayStroke& stroke : plan.strokes) {
-        TissueCut cut;
-        if (Status s = tissue.cut(stroke.sweep, plan.cut, &cut); !s.ok())
-            return Status::error(stroke.name + ": " + s.message());
-        out.cutTotals += cut.tets;
-        out.surfaceCapTriangles += cut.surface.surface.capTriangles;
-        if (tool && stroke.times.size() >= 2) {
-            const double t0 = stroke.times.front();
-            if (Status s = simulate(stroke.times.back() - t0, [&](double t) { return toolAt(stroke, t0 + t); }); !s.ok())
-                return s;
-            if (Status s = tool->setPose(withdrawnTool(stroke.tool.back(), tissue.mesh())); !s.ok())
-                return s;
-        }
-        if (!report(done))
-            return Status::error("cancelled");
     }
-    if (Status s = simulate(plan.duration, {}); !s.ok())
-        return s;
 
-    // Outcome.
-    tissue.updateSurface();
-    out.stableDt = sim.stableTimeStep();
-    if (out.dt == 0)
-        out.dt = sim.timeStep();
-    out.kineticFinal = sim.kineticEnergy();
-    out.effectTimes = sim.totalTimes();
-    const TetMesh& mesh = tissue.mesh();
-    out.finite = out.finite && std::isfinite(out.kineticFinal);
-    for (int n = 0; n < mesh.nodeCount() && out.finite; ++n)
-        out.finite = mesh.pos(n).allFinite();
-    for (int t = 0; t < mesh.tetCount(); ++t)
-        out.inverted += mesh.currentVolume(t) > 0 ? 0 : 1;
-    out.pieces = tissue.pieces().count;
-    out.resectedVolumeFraction = resectedVolumeFraction(tissue);
-    out.minRadiusRatio = summarizeQuality(mesh).minRadiusRatio;
-    out.surface = tissue.surface().surface();
-    tissue.stopSimulation();
-    out.mesh = std::move(tissue).takeMesh();
-    report(total);
+    /// The outcome (see replay.h); the tissue's mesh and surface move into it.
+    void finish() {
+        m_tissue.updateSurface();
+        m_out.stableDt = m_sim->stableTimeStep();
+        if (m_out.dt == 0)
+            m_out.dt = m_sim->timeStep();
+        m_out.kineticFinal = m_sim->kineticEnergy();
+        m_out.effectTimes = m_sim->totalTimes();
+        const TetMesh& mesh = m_tissue.mesh();
+        m_out.finite = m_out.finite && std::isfinite(m_out.kineticFinal);
+        for (int n = 0; n < mesh.nodeCount() && m_out.finite; ++n)
+            m_out.finite = mesh.pos(n).allFinite();
+        for (int t = 0; t < mesh.tetCount(); ++t)
+            m_out.inverted += mesh.currentVolume(t) > 0 ? 0 : 1;
+        m_out.pieces = m_tissue.pieces().count;
+        m_out.resectedVolumeFraction = resectedVolumeFraction(m_tissue);
+        m_out.minRadiusRatio = summarizeQuality(mesh).minRadiusRatio;
+        m_out.surface = m_tissue.surface().surface();
+        m_tissue.stopSimulation();
+        m_sim = nullptr;
+        m_out.mesh = std::move(m_tissue).takeMesh();
+        report(m_total);
+    }
+
+private:
+    bool report(double t) const { return !m_progress || m_progress(m_total > 0 ? std::min(1.0, t / m_total) : 1.0); }
+
+    ReplayPlan& m_plan;
+    ReplayOutcome& m_out;
+    const ReplayProgress& m_progress;
+    Tissue m_tissue;
+    Simulator* m_sim = nullptr;
+    ToolContactEffect* m_tool = nullptr;
+    double m_total = 0, m_done = 0;  ///< simulated seconds: in all, and so far
+    bool m_diverged = false;
+};
+
+} // namespace
+
+Status replay(ReplayPlan plan, ReplayOutcome& out, const ReplayProgress& progress) {
+    out = {};
+    out.tetsBefore = plan.mesh.tetCount();
+    ReplayRun run(plan, out, progress);
+    if (Status s = run.start(); !s.ok())
+        return s;
+    for (const ReplayStroke& stroke : plan.strokes)
+        if (Status s = run.stroke(stroke); !s.ok())
+            return s;
+    if (Status s = run.simulate(plan.duration, {}); !s.ok())
+        return s;
+    run.finish();
     return Status::success();
 }
 

@@ -104,6 +104,29 @@ std::vector<int> nodesOnCut(const CutSelection& selection, const Decomposition& 
     return nodes;
 }
 
+/// Steps 4-5 (section 4.4): decomposition of the affected tets and separation of the sides,
+/// with their counts and change-list entries (including every node now on the cut).
+Status decomposeStep(TetMesh& mesh, const CutSelection& selection, const SweepSurface& sweep,
+                     const CutOptions& options, Decomposition& decomposition, CutResult& result) {
+    DecomposeOptions decompose;
+    decompose.symmetricFaces = options.method == CutMethod::Hybrid && options.triangulation == FaceTriangulation::Enhanced;
+    decompose.sweep = &sweep;
+    decompose.faceNodeAdvantage = options.faceNodeAdvantage;
+    CutChanges& changes = result.changes;
+    if (Status s = decomposeTets(mesh, selection, decompose, decomposition, changes); !s.ok())
+        return s;
+    const Separation separation = separate(mesh, selection, decomposition, changes);
+    changes.tetSide = decomposition.tetSide;
+    CutStats& stats = result.stats;
+    stats.decomposedTets = decomposition.decomposedTets;
+    stats.steinerPoints = decomposition.steinerPoints;
+    stats.faceNodes = decomposition.faceNodes;
+    stats.separatedTets = separation.separatedTets;
+    stats.duplicatedNodes = separation.duplicatedNodes;
+    changes.cutSurfaceNodes = nodesOnCut(selection, decomposition, changes);
+    return Status::success();
+}
+
 /// Step 6: snapping (section 4.5); the tets around moved nodes are re-registered in the grid.
 void snapStep(TetMesh& mesh, TetGrid& grid, const SweepSurface& sweep, const CutOptions& options,
               const std::vector<int>& boundaryCutNodes, CutResult& result) {
@@ -291,22 +314,10 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
     if (!stage(CutStage::Decompose))
         return cancelledAt(CutStage::Decompose);
     t0 = Clock::now();
-    DecomposeOptions decompose;
-    decompose.symmetricFaces = options.method == CutMethod::Hybrid && options.triangulation == FaceTriangulation::Enhanced;
-    decompose.sweep = &sweep;
-    decompose.faceNodeAdvantage = options.faceNodeAdvantage;
     Decomposition decomposition;
-    if (Status s = decomposeTets(m_mesh, selection, decompose, decomposition, changes); !s.ok())
+    if (Status s = decomposeStep(m_mesh, selection, sweep, options, decomposition, result); !s.ok())
         return Status::error("cut failed, mesh unchanged: " + s.message());
-    const Separation separation = separate(m_mesh, selection, decomposition, changes);
     stats.timeMs.decompose = msSince(t0);
-    changes.tetSide = decomposition.tetSide;
-    stats.decomposedTets = decomposition.decomposedTets;
-    stats.steinerPoints = decomposition.steinerPoints;
-    stats.faceNodes = decomposition.faceNodes;
-    stats.separatedTets = separation.separatedTets;
-    stats.duplicatedNodes = separation.duplicatedNodes;
-    changes.cutSurfaceNodes = nodesOnCut(selection, decomposition, changes);
 
     // Step 6 (section 4.5): snapping.
     if (!stage(CutStage::Snap))
