@@ -60,7 +60,7 @@ void SimulationController::reset() {
     m_dt = m_stableDt = 0;
     const auto current = m_session.current();
     const Scenario& scenario = m_document.scenario();
-    if (!current || scenario.tissues.empty() || current->mesh.empty()) {
+    if (!current || scenario.tissues.empty() || current->mesh().empty()) {
         m_mesh = {};
         m_surface = {};
         emit resetDone();
@@ -68,8 +68,8 @@ void SimulationController::reset() {
             emit playingChanged(false);
         return;
     }
-    m_mesh = current->mesh;
-    m_surface = current->surface;
+    m_mesh = current->mesh();
+    m_surface = current->surface();
     ReplayPlan plan;
     Status status = planLoadedTissue(scenario, scenario.tissues.front(), m_mesh, {}, plan);
     if (status.ok()) {

@@ -3,6 +3,7 @@
 #include "widgets/accuracy_panel.h"
 #include "widgets/authoring_panel.h"
 #include "widgets/cut_panel.h"
+#include "widgets/cut_preview.h"
 #include "widgets/export_runner.h"
 #include "widgets/language.h"
 #include "widgets/quality_panel.h"
@@ -60,13 +61,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setObjectName(QStringLiteral("mainWindow"));
     m_document = new ScenarioDocument(this);
     m_session = new TissueSession(*m_document, this);
+    m_preview = new CutPreview(*m_document, *m_session, this);
     m_simulation = new SimulationController(*m_document, *m_session, this);
 
     m_viewport = new VtkViewport(this);
     m_viewport->setObjectName(QStringLiteral("viewport"));
     setCentralWidget(m_viewport);
 
-    m_cutPanel = new CutPanel(*m_document, *m_session);
+    m_cutPanel = new CutPanel(*m_document, *m_session, *m_preview);
     m_simulationPanel = new SimulationPanel(*m_document, *m_simulation);
     m_authoringPanel = new AuthoringPanel(m_viewport);
     m_accuracyPanel = new AccuracyPanel;
@@ -94,7 +96,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         refreshView(false);
         updateQualityViews();
     });
-    connect(m_session, &TissueSession::previewChanged, this, [this] {
+    connect(m_preview, &CutPreview::changed, this, [this] {
         refreshView(false);
         updateQualityViews();
     });
@@ -109,18 +111,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         statusBar()->showMessage(message, 10000);
     });
     // Authoring: what is drawn or recorded becomes the pending cut, previewed live.
-    connect(m_authoringPanel, &AuthoringPanel::sweepFinished, m_session, &TissueSession::setPendingSweep);
-    connect(m_authoringPanel, &AuthoringPanel::strokeRecorded, m_session, &TissueSession::setPendingStroke);
+    connect(m_authoringPanel, &AuthoringPanel::sweepFinished, m_preview, &CutPreview::setPendingSweep);
+    connect(m_authoringPanel, &AuthoringPanel::strokeRecorded, m_preview, &CutPreview::setPendingStroke);
     connect(&m_authoringPanel->sweepEditor(), &SweepEditTool::sweepChanged, this, [this] {
         if (const auto spec = m_authoringPanel->sweepEditor().sweepSpec())
-            m_session->setPendingSweep(*spec);
+            m_preview->setPendingSweep(*spec);
     });
     connect(m_document, &ScenarioDocument::documentReset, this,
             [this] { m_authoringPanel->setToolSpec(m_document->scenario().tool); });
     connect(m_session, &TissueSession::currentChanged, this, [this] {
         // New sweep points and stroke depths are picked on the tissue's boundary.
         if (const auto current = m_session->current())
-            m_authoringPanel->setPickSurface(pickSurfaceOf(current->mesh));
+            m_authoringPanel->setPickSurface(pickSurfaceOf(current->mesh()));
         else
             m_authoringPanel->clearPickSurface();
     });
@@ -187,11 +189,11 @@ void MainWindow::createActions() {
     QMenu* cut = menuBar()->addMenu(tr("&Cut"));
     QAction* apply = cut->addAction(tr("&Apply pending cut"), this, [this] {
         QString error;
-        if (!m_session->applyPending(&error))
+        if (!m_preview->apply(&error))
             showError(tr("The cut was not applied."), error);
     });
     apply->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Return));
-    cut->addAction(tr("&Discard pending cut"), m_session, &TissueSession::discardPending);
+    cut->addAction(tr("&Discard pending cut"), m_preview, &CutPreview::discard);
 
     QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
     QAction* play = sim->addAction(tr("&Play / pause"), this, [this] {
@@ -455,8 +457,8 @@ void MainWindow::updateStatus() {
     }
     m_statusLabel->setText(tr("%1: %2 nodes, %3 tets, %4 pieces, min radius ratio %5, stable dt %6 s")
                                .arg(current->tissueName)
-                               .arg(current->mesh.nodeCount())
-                               .arg(current->mesh.tetCount())
+                               .arg(current->mesh().nodeCount())
+                               .arg(current->mesh().tetCount())
                                .arg(current->pieces)
                                .arg(current->quality.minRadiusRatio, 0, 'g', 3)
                                .arg(current->stableDt, 0, 'g', 3));
@@ -501,7 +503,7 @@ void MainWindow::onBaseChanged() {
 void MainWindow::refreshView(bool frame) {
     // What is shown: the preview of a pending cut, else the simulated tissue once it has
     // moved, else the current tissue.
-    const auto preview = m_session->preview();
+    const auto preview = m_preview->preview();
     const auto state = preview ? preview : m_session->current();
     const bool simulated = !preview && state && m_simulation->isReady() && m_simulation->steps() > 0;
     frame = frame || m_frameNext;
@@ -511,8 +513,8 @@ void MainWindow::refreshView(bool frame) {
         updateStatus();
         return;
     }
-    const TetMesh& mesh = simulated ? m_simulation->mesh() : state->mesh;
-    const TriangleSurface& surface = simulated ? m_simulation->surface().surface() : state->surface.surface();
+    const TetMesh& mesh = simulated ? m_simulation->mesh() : state->mesh();
+    const TriangleSurface& surface = simulated ? m_simulation->surface().surface() : state->surface().surface();
     // A simulation step only moves points (STYLE.md item 8).
     if (simulated && !frame && m_shownMesh == &mesh && m_viewport->tetMeshActor().updatePositions(mesh)) {
         if (m_showSurface->isChecked())
@@ -524,7 +526,7 @@ void MainWindow::refreshView(bool frame) {
     m_shownState = state;
     m_shownMesh = &mesh;
     m_viewport->setTetMesh(mesh, frame);
-    m_viewport->tetMeshActor().setTetSchemes(state->schemes);
+    m_viewport->tetMeshActor().setTetSchemes(state->tissue.schemes());
     m_viewport->setSurface(surface, false);
     applyVisibility();
     m_qualityPanel->meshChanged();
@@ -548,10 +550,10 @@ void MainWindow::updateAccuracyPanel() {
     if (scenarioCuts(scenario, cuts).ok() && !cuts.empty())
         sweep = cuts.front().sweep;
     else
-        sweep = loopScoopSweep(base->mesh, 0.6);
+        sweep = loopScoopSweep(base->mesh(), 0.6);
     // Shares the session's immutable state without copying it.
-    m_accuracyPanel->setTissue(std::shared_ptr<const TetMesh>(base, &base->mesh), std::move(sweep),
-                               base->tissueName, std::shared_ptr<const EmbeddedSurface>(base, &base->surface));
+    m_accuracyPanel->setTissue(std::shared_ptr<const TetMesh>(base, &base->mesh()), std::move(sweep),
+                               base->tissueName, std::shared_ptr<const EmbeddedSurface>(base, &base->surface()));
 }
 
 void MainWindow::applyVisibility() {
@@ -563,17 +565,17 @@ void MainWindow::applyVisibility() {
 void MainWindow::updateQualityViews() {
     // Before and after: the current tissue and its preview while a cut is pending, else the
     // uncut tissue and the current one once the document has cuts.
-    const auto preview = m_session->preview();
+    const auto preview = m_preview->preview();
     const auto current = m_session->current();
     const auto base = m_session->base();
     const auto before = preview ? current : base;
-    const auto after = preview ? preview : (current && current->cuts > 0 ? current : nullptr);
+    const auto after = preview ? preview : (current && current->cuts() > 0 ? current : nullptr);
     if (before)
-        m_qualityPanel->setBeforeMesh(before->mesh, before->stableDt);
+        m_qualityPanel->setBeforeMesh(before->mesh(), before->stableDt);
     else
         m_qualityPanel->clearBefore();
     if (after)
-        m_qualityPanel->setAfterMesh(after->mesh, after->stableDt);
+        m_qualityPanel->setAfterMesh(after->mesh(), after->stableDt);
     else
         m_qualityPanel->clearAfter();
 }

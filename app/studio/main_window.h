@@ -24,6 +24,7 @@ namespace resect {
 class AccuracyPanel;
 class AuthoringPanel;
 class CutPanel;
+class CutPreview;
 class ExportRunner;
 class QualityPanel;
 struct TissueState;
@@ -62,6 +63,7 @@ public:
     VtkViewport* viewport() const { return m_viewport; }
     ScenarioDocument& document() { return *m_document; }
     TissueSession& session() { return *m_session; }
+    CutPreview& cutPreview() { return *m_preview; }
     SimulationController& simulation() { return *m_simulation; }
     CutPanel* cutPanel() const { return m_cutPanel; }
     SimulationPanel* simulationPanel() const { return m_simulationPanel; }
@@ -118,6 +120,7 @@ private:
 
     ScenarioDocument* m_document = nullptr;
     TissueSession* m_session = nullptr;
+    CutPreview* m_preview = nullptr;
     SimulationController* m_simulation = nullptr;
 
     VtkViewport* m_viewport = nullptr;

@@ -10,6 +10,7 @@
 #include "widgets/quality_panel.h"
 #include "scenario/accuracy_study.h"
 #include "widgets/cut_panel.h"
+#include "widgets/cut_preview.h"
 #include "widgets/stroke_recorder.h"
 #include "widgets/scenario_document.h"
 #include "widgets/simulation_controller.h"
@@ -52,10 +53,11 @@ struct Studio {
     bool load(Sample sample = Sample::Polyp) {
         QSignalSpy loaded(&window, &MainWindow::meshLoaded);
         window.openSample(sample);
-        return loaded.wait(kWaitMs) && window.session().waitForIdle(kWaitMs);
+        return loaded.wait(kWaitMs) && idle();
     }
-    bool idle() { return window.session().waitForIdle(kWaitMs); }
-    int tets() { return window.session().current()->mesh.tetCount(); }
+    /// The session and the preview are idle.
+    bool idle() { return window.cutPreview().waitForIdle(kWaitMs); }
+    int tets() { return window.session().current()->mesh().tetCount(); }
     QAction* action(const char* name) { return window.findChild<QAction*>(QString::fromLatin1(name)); }
 };
 
@@ -94,7 +96,7 @@ private slots:
         CutPanel* panel = s.window.cutPanel();
         QCOMPARE(panel->previewValue(QStringLiteral("tets")), QString());
 
-        s.window.session().setPendingSweep(planeSweep(s.window.session().base()->mesh, 0.6));
+        s.window.cutPreview().setPendingSweep(planeSweep(s.window.session().base()->mesh(), 0.6));
         QVERIFY(s.idle());
         const QString at02 = panel->previewValue(QStringLiteral("added_tets"));
         QVERIFY(!at02.isEmpty());
@@ -171,11 +173,11 @@ private slots:
         QVERIFY(!panel->strokeRecorder().isRecording());
 
         // The stroke is the pending cut: its sweep is previewed, then applied.
-        QVERIFY(s.window.session().hasPending());
+        QVERIFY(s.window.cutPreview().hasPending());
         QVERIFY(s.idle());
-        QVERIFY2(s.window.session().previewError().isEmpty(), qPrintable(s.window.session().previewError()));
-        QVERIFY(s.window.session().preview());
-        const int previewTets = s.window.session().preview()->mesh.tetCount();
+        QVERIFY2(s.window.cutPreview().error().isEmpty(), qPrintable(s.window.cutPreview().error()));
+        QVERIFY(s.window.cutPreview().preview());
+        const int previewTets = s.window.cutPreview().preview()->mesh().tetCount();
         QVERIFY(previewTets > tets);
         QCOMPARE(panel->lastStroke().poses.size(), std::size_t(13));
         QVERIFY(panel->lastStroke().poses.back().t > panel->lastStroke().poses.front().t);
@@ -192,9 +194,9 @@ private slots:
         {
             Studio s;
             QVERIFY(s.load());
-            s.window.session().setPendingSweep(planeSweep(s.window.session().base()->mesh, 0.55));
+            s.window.cutPreview().setPendingSweep(planeSweep(s.window.session().base()->mesh(), 0.55));
             QVERIFY(s.idle());
-            QVERIFY(s.window.session().applyPending());
+            QVERIFY(s.window.cutPreview().apply());
             s.window.document().toggleEffect(QStringLiteral("gravity"));
             QVERIFY(s.idle());
             QVERIFY(s.window.saveAs(path));
@@ -211,7 +213,7 @@ private slots:
         QCOMPARE(reopened.effects, saved.effects);
         QCOMPARE(reopened.cut, saved.cut);
         QCOMPARE(reopened.tissues, saved.tissues);
-        QCOMPARE(s.window.session().current()->cuts, 1);
+        QCOMPARE(s.window.session().current()->cuts(), 1);
         QVERIFY(s.window.document().recentFiles().contains(QFileInfo(path).absoluteFilePath()));
     }
 
@@ -294,9 +296,9 @@ private slots:
         Studio s;
         QVERIFY(s.load(Sample::Myoma));
         // A short scenario: the export replays it.
-        s.window.session().setPendingSweep(planeSweep(s.window.session().base()->mesh, 0.7));
+        s.window.cutPreview().setPendingSweep(planeSweep(s.window.session().base()->mesh(), 0.7));
         QVERIFY(s.idle());
-        QVERIFY(s.window.session().applyPending());
+        QVERIFY(s.window.cutPreview().apply());
         QVERIFY(s.idle());
         const QString out = m_dir.filePath(QStringLiteral("package"));
         QSignalSpy finished(&s.window, &MainWindow::exportFinished);
@@ -342,7 +344,7 @@ private slots:
         threshold->setValue(30.0);
         filter->click();
         QVERIFY(actor.qualityFilterEnabled());
-        const auto qualities = tetQualities(s.window.session().current()->mesh);
+        const auto qualities = tetQualities(s.window.session().current()->mesh());
         int below = 0;
         for (const TetQuality& q : qualities)
             below += q.minDihedral * 180.0 / M_PI < 30.0;
