@@ -107,6 +107,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
     connect(m_simulation, &SimulationController::stepped, this, [this] { refreshView(false); });
     connect(m_simulation, &SimulationController::resetDone, this, [this] { refreshView(false); });
+    connect(m_simulation, &SimulationController::cutsFollowed, this, [this] { refreshView(false); });
     connect(m_simulation, &SimulationController::failed, this, [this](const QString& message) {
         statusBar()->showMessage(message, 10000);
     });
