@@ -15,6 +15,7 @@
 #include "widgets/scenario_document.h"
 #include "widgets/simulation_controller.h"
 #include "widgets/simulation_panel.h"
+#include "widgets/shown_tissue.h"
 #include "widgets/tissue_session.h"
 #include "widgets/vtk_viewport.h"
 
@@ -289,6 +290,42 @@ private slots:
         QVERIFY(!gravity->isChecked());
         QCOMPARE(s.window.simulation().steps(), 0LL);
         QCOMPARE(s.window.simulation().effectNames().size(), std::size_t(1));
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    // What is shown: the preview while a cut is pending, else the simulated tissue once it
+    // moved; a cut applied while simulating is followed by the simulation and shown at once.
+    void aCutAppliedWhileSimulatingIsShownInTheSimulation() {
+        Studio s;
+        QVERIFY(s.load(Sample::Myoma));
+        ShownTissue& shown = s.window.shownTissue();
+        TetMeshActor& actor = s.window.viewport()->tetMeshActor();
+        QCOMPARE(shown.source(), ShownTissue::Source::Current);
+        QCOMPARE(shown.mesh(), &s.window.session().current()->mesh());
+
+        auto* step = s.window.simulationPanel()->findChild<QPushButton*>(QStringLiteral("simStep"));
+        QVERIFY(step);
+        step->click();
+        step->click();
+        QCOMPARE(shown.source(), ShownTissue::Source::Simulation);
+        QCOMPARE(shown.mesh(), &s.window.simulation().mesh());
+        const double time = s.window.simulation().time();
+        const int tets = s.tets();
+
+        s.window.cutPreview().setPendingSweep(planeSweep(s.window.session().base()->mesh(), 0.6));
+        QVERIFY(s.idle());
+        QCOMPARE(shown.source(), ShownTissue::Source::Preview);
+        QCOMPARE(shown.mesh(), &s.window.cutPreview().preview()->mesh());
+        QCOMPARE(actor.tetCount(), s.window.cutPreview().preview()->mesh().tetCount());
+
+        QTest::mouseClick(s.window.cutPanel()->findChild<QPushButton*>(QStringLiteral("applyCut")), Qt::LeftButton);
+        QVERIFY(s.idle());
+        QCOMPARE(s.window.session().current()->cuts(), 1);
+        QCOMPARE(s.window.simulation().time(), time); // followed, not rebuilt
+        QCOMPARE(shown.source(), ShownTissue::Source::Simulation);
+        QVERIFY(s.window.simulation().mesh().tetCount() > tets);
+        QCOMPARE(actor.tetCount(), s.window.simulation().mesh().tetCount());
+        QCOMPARE(actor.tetScheme(actor.tetCount() - 1), s.window.simulation().tissue().schemes().back());
         s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
     }
 
