@@ -324,7 +324,7 @@
 <context>
     <name>resect::CutPanel</name>
     <message>
-        <location filename="../widgets/cut_panel.cpp" line="+36"/>
+        <location filename="../widgets/cut_panel.cpp" line="+37"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
@@ -521,6 +521,34 @@
     </message>
 </context>
 <context>
+    <name>resect::CutPreview</name>
+    <message>
+        <location filename="../widgets/cut_preview.cpp" line="+84"/>
+        <source>There is no cut to apply: draw a sweep or record a stroke first.</source>
+        <translation>Es gibt keinen Schnitt zum Anwenden: Zeichnen Sie zuerst eine Schnittfläche oder zeichnen Sie eine Schnittbewegung auf.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The cut cannot be applied: %1</source>
+        <translation>Der Schnitt kann nicht angewendet werden: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The preview of the cut is not ready yet: apply it once it is shown.</source>
+        <translation>Die Vorschau des Schnitts ist noch nicht fertig: Wenden Sie ihn an, sobald sie angezeigt wird.</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>Internal error: %1</source>
+        <translation>Interner Fehler: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Internal error</source>
+        <translation>Interner Fehler</translation>
+    </message>
+</context>
+<context>
     <name>resect::ExportRunner</name>
     <message numerus="yes">
         <location filename="../widgets/export_runner.cpp" line="+92"/>
@@ -631,7 +659,7 @@
 <context>
     <name>resect::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+269"/>
+        <location filename="../app/studio/main_window.cpp" line="+267"/>
         <location line="+11"/>
         <location line="+134"/>
         <location line="+57"/>
@@ -639,17 +667,17 @@
         <translation>Resect Studio</translation>
     </message>
     <message>
-        <location line="-321"/>
+        <location line="-322"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location line="-46"/>
+        <location line="-44"/>
         <source>The tissue could not be loaded or cut.</source>
         <translation>Das Gewebe konnte nicht geladen oder geschnitten werden.</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+30"/>
         <location line="+55"/>
         <source>The cut was not applied.</source>
         <translation>Der Schnitt wurde nicht angewendet.</translation>
@@ -775,7 +803,7 @@
         <translation>Hochaufgelöste &amp;Oberfläche anzeigen</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>&amp;Language</source>
         <translation>S&amp;prache</translation>
     </message>
@@ -947,12 +975,12 @@
         <translation>Gewebe wird geladen und vernetzt...</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+42"/>
         <source>The language changes when Resect Studio is started again.</source>
         <translation>Die Sprache ändert sich beim nächsten Start von Resect Studio.</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-42"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -1220,7 +1248,7 @@
 <context>
     <name>resect::ScenarioDocument</name>
     <message>
-        <location filename="../widgets/scenario_document.cpp" line="+80"/>
+        <location filename="../widgets/scenario_document.cpp" line="+81"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
@@ -1230,18 +1258,17 @@
         <translation>unbekanntes Beispiel „%1“ (bekannt: %2)</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <location line="+24"/>
+        <location line="+18"/>
         <source>New %1 scenario</source>
         <translation>Neues Szenario %1</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="+13"/>
         <source>%1: no such file</source>
         <translation>%1: Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+30"/>
         <source>the document has no file name yet (use Save As)</source>
         <translation>das Dokument hat noch keinen Dateinamen (Speichern unter verwenden)</translation>
     </message>
@@ -1264,7 +1291,7 @@
 <context>
     <name>resect::SimulationController</name>
     <message>
-        <location filename="../widgets/simulation_controller.cpp" line="+146"/>
+        <location filename="../widgets/simulation_controller.cpp" line="+163"/>
         <source>The simulation has no usable time step.</source>
         <translation>Die Simulation hat keinen verwendbaren Zeitschritt.</translation>
     </message>
@@ -1303,12 +1330,12 @@
     </message>
     <message>
         <location line="+14"/>
-        <location line="+79"/>
+        <location line="+80"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-77"/>
+        <location line="-78"/>
         <source>Step</source>
         <translation>Schritt</translation>
     </message>
@@ -1343,7 +1370,7 @@
         <translation>Pro Schritt</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -1490,17 +1517,7 @@
 <context>
     <name>resect::TissueSession</name>
     <message>
-        <location filename="../widgets/tissue_session.cpp" line="+168"/>
-        <source>There is no cut to apply: draw a sweep or record a stroke first.</source>
-        <translation>Es gibt keinen Schnitt zum Anwenden: Zeichnen Sie zuerst eine Schnittfläche oder zeichnen Sie eine Schnittbewegung auf.</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>The cut cannot be applied: %1</source>
-        <translation>Der Schnitt kann nicht angewendet werden: %1</translation>
-    </message>
-    <message>
-        <location line="+72"/>
+        <location filename="../widgets/tissue_session.cpp" line="+157"/>
         <source>Internal error: %1</source>
         <translation>Interner Fehler: %1</translation>
     </message>
@@ -1510,12 +1527,7 @@
         <translation>Interner Fehler</translation>
     </message>
     <message>
-        <location line="+30"/>
-        <source>tissue &apos;%1&apos;: binding the surface: %2</source>
-        <translation>Gewebe „%1“: Binden der Oberfläche: %2</translation>
-    </message>
-    <message>
-        <location line="+30"/>
+        <location line="+62"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

@@ -324,7 +324,7 @@
 <context>
     <name>resect::CutPanel</name>
     <message>
-        <location filename="../widgets/cut_panel.cpp" line="+36"/>
+        <location filename="../widgets/cut_panel.cpp" line="+37"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
@@ -521,6 +521,34 @@
     </message>
 </context>
 <context>
+    <name>resect::CutPreview</name>
+    <message>
+        <location filename="../widgets/cut_preview.cpp" line="+84"/>
+        <source>There is no cut to apply: draw a sweep or record a stroke first.</source>
+        <translation>Il n&apos;y a aucune coupe à appliquer : dessinez d&apos;abord une surface de balayage ou enregistrez un geste de coupe.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The cut cannot be applied: %1</source>
+        <translation>La coupe ne peut pas être appliquée : %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The preview of the cut is not ready yet: apply it once it is shown.</source>
+        <translation>L&apos;aperçu de la coupe n&apos;est pas encore prêt : appliquez-la une fois qu&apos;il est affiché.</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>Internal error: %1</source>
+        <translation>Erreur interne : %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Internal error</source>
+        <translation>Erreur interne</translation>
+    </message>
+</context>
+<context>
     <name>resect::ExportRunner</name>
     <message numerus="yes">
         <location filename="../widgets/export_runner.cpp" line="+92"/>
@@ -631,7 +659,7 @@
 <context>
     <name>resect::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+269"/>
+        <location filename="../app/studio/main_window.cpp" line="+267"/>
         <location line="+11"/>
         <location line="+134"/>
         <location line="+57"/>
@@ -639,17 +667,17 @@
         <translation>Resect Studio</translation>
     </message>
     <message>
-        <location line="-321"/>
+        <location line="-322"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location line="-46"/>
+        <location line="-44"/>
         <source>The tissue could not be loaded or cut.</source>
         <translation>Le tissu n&apos;a pas pu être chargé ou coupé.</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+30"/>
         <location line="+55"/>
         <source>The cut was not applied.</source>
         <translation>La coupe n&apos;a pas été appliquée.</translation>
@@ -775,7 +803,7 @@
         <translation>Afficher la &amp;surface haute résolution</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>&amp;Language</source>
         <translation>&amp;Langue</translation>
     </message>
@@ -947,12 +975,12 @@
         <translation>Chargement et maillage du tissu...</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+42"/>
         <source>The language changes when Resect Studio is started again.</source>
         <translation>La langue changera au prochain démarrage de Resect Studio.</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-42"/>
         <source>Cancel</source>
         <translation>Annuler</translation>
     </message>
@@ -1220,7 +1248,7 @@
 <context>
     <name>resect::ScenarioDocument</name>
     <message>
-        <location filename="../widgets/scenario_document.cpp" line="+80"/>
+        <location filename="../widgets/scenario_document.cpp" line="+81"/>
         <source>untitled</source>
         <translation>sans titre</translation>
     </message>
@@ -1230,18 +1258,17 @@
         <translation>exemple « %1 » inconnu (connus : %2)</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <location line="+24"/>
+        <location line="+18"/>
         <source>New %1 scenario</source>
         <translation>Nouveau scénario %1</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="+13"/>
         <source>%1: no such file</source>
         <translation>%1 : fichier introuvable</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+30"/>
         <source>the document has no file name yet (use Save As)</source>
         <translation>le document n&apos;a pas encore de nom de fichier (utilisez Enregistrer sous)</translation>
     </message>
@@ -1264,7 +1291,7 @@
 <context>
     <name>resect::SimulationController</name>
     <message>
-        <location filename="../widgets/simulation_controller.cpp" line="+146"/>
+        <location filename="../widgets/simulation_controller.cpp" line="+163"/>
         <source>The simulation has no usable time step.</source>
         <translation>La simulation n&apos;a pas de pas de temps utilisable.</translation>
     </message>
@@ -1303,12 +1330,12 @@
     </message>
     <message>
         <location line="+14"/>
-        <location line="+79"/>
+        <location line="+80"/>
         <source>Play</source>
         <translation>Lecture</translation>
     </message>
     <message>
-        <location line="-77"/>
+        <location line="-78"/>
         <source>Step</source>
         <translation>Avancer d&apos;un pas</translation>
     </message>
@@ -1343,7 +1370,7 @@
         <translation>Par pas</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -1490,17 +1517,7 @@
 <context>
     <name>resect::TissueSession</name>
     <message>
-        <location filename="../widgets/tissue_session.cpp" line="+168"/>
-        <source>There is no cut to apply: draw a sweep or record a stroke first.</source>
-        <translation>Il n&apos;y a aucune coupe à appliquer : dessinez d&apos;abord une surface de balayage ou enregistrez un geste de coupe.</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>The cut cannot be applied: %1</source>
-        <translation>La coupe ne peut pas être appliquée : %1</translation>
-    </message>
-    <message>
-        <location line="+72"/>
+        <location filename="../widgets/tissue_session.cpp" line="+157"/>
         <source>Internal error: %1</source>
         <translation>Erreur interne : %1</translation>
     </message>
@@ -1510,12 +1527,7 @@
         <translation>Erreur interne</translation>
     </message>
     <message>
-        <location line="+30"/>
-        <source>tissue &apos;%1&apos;: binding the surface: %2</source>
-        <translation>tissu « %1 » : liaison de la surface : %2</translation>
-    </message>
-    <message>
-        <location line="+30"/>
+        <location line="+62"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>

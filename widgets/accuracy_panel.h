@@ -43,7 +43,7 @@ public:
     /// Cancels a running study and waits for it.
     ~AccuracyPanel() override;
 
-    /// What the study cuts: the tissue (e.g. TissueSession::base()->mesh, the uncut tissue,
+    /// What the study cuts: the tissue (e.g. TissueSession::base()->mesh(), the uncut tissue,
     /// which current() is too when the scenario has no cut yet; shared without a copy through
     /// an aliasing shared_ptr to the TissueState), the sweep (the scenario's first cut, or
     /// loopScoopSweep when it has none), the name shown in the rows and, optionally, the

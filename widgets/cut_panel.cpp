@@ -1,5 +1,6 @@
 #include "widgets/cut_panel.h"
 
+#include "widgets/cut_preview.h"
 #include "widgets/scenario_document.h"
 #include "widgets/tissue_session.h"
 
@@ -38,8 +39,8 @@ QString beforeAfter(const QString& before, const QString& after) {
 
 } // namespace
 
-CutPanel::CutPanel(ScenarioDocument& document, TissueSession& session, QWidget* parent)
-    : QWidget(parent), m_document(document), m_session(session) {
+CutPanel::CutPanel(ScenarioDocument& document, TissueSession& session, CutPreview& preview, QWidget* parent)
+    : QWidget(parent), m_document(document), m_session(session), m_preview(preview) {
     setObjectName(QStringLiteral("cutPanel"));
     auto* layout = new QVBoxLayout(this);
 
@@ -78,8 +79,8 @@ CutPanel::CutPanel(ScenarioDocument& document, TissueSession& session, QWidget* 
     form->addRow(tr("Relaxation rings"), m_rings);
     layout->addWidget(settings);
 
-    auto* preview = new QGroupBox(tr("Preview"), this);
-    auto* previewForm = new QFormLayout(preview);
+    auto* previewBox = new QGroupBox(tr("Preview"), this);
+    auto* previewForm = new QFormLayout(previewBox);
     m_previewStatus = new QLabel;
     m_previewStatus->setObjectName(QStringLiteral("previewStatus"));
     m_previewStatus->setWordWrap(true);
@@ -106,7 +107,7 @@ CutPanel::CutPanel(ScenarioDocument& document, TissueSession& session, QWidget* 
     buttons->addWidget(m_apply);
     buttons->addWidget(m_discard);
     previewForm->addRow(buttons);
-    layout->addWidget(preview);
+    layout->addWidget(previewBox);
     layout->addStretch(1);
 
     // Controls -> document (undoable edits).
@@ -147,14 +148,14 @@ CutPanel::CutPanel(ScenarioDocument& document, TissueSession& session, QWidget* 
             m_document.setRings(v);
     });
     connect(m_apply, &QPushButton::clicked, this, &CutPanel::apply);
-    connect(m_discard, &QPushButton::clicked, &m_session, &TissueSession::discardPending);
+    connect(m_discard, &QPushButton::clicked, &m_preview, &CutPreview::discard);
 
     // Document and session -> panel.
     connect(&m_document, &ScenarioDocument::cutSettingsChanged, this, &CutPanel::syncFromDocument);
     connect(&m_document, &ScenarioDocument::documentReset, this, &CutPanel::syncFromDocument);
-    connect(&m_session, &TissueSession::previewChanged, this, &CutPanel::updatePreview);
+    connect(&m_preview, &CutPreview::changed, this, &CutPanel::updatePreview);
+    connect(&m_preview, &CutPreview::busyChanged, this, &CutPanel::updatePreview);
     connect(&m_session, &TissueSession::currentChanged, this, &CutPanel::updatePreview);
-    connect(&m_session, &TissueSession::busyChanged, this, &CutPanel::updatePreview);
     syncFromDocument();
     updatePreview();
 }
@@ -194,15 +195,15 @@ void CutPanel::syncFromDocument() {
 
 void CutPanel::updatePreview() {
     const auto current = m_session.current();
-    const auto preview = m_session.preview();
-    const bool pending = m_session.hasPending();
-    m_apply->setEnabled(pending);
+    const auto preview = m_preview.preview();
+    const bool pending = m_preview.hasPending();
+    m_apply->setEnabled(pending && m_preview.isReady());
     m_discard->setEnabled(pending);
     if (!pending)
         m_previewStatus->setText(tr("No pending cut. Draw a sweep or record a stroke to preview a cut."));
-    else if (!m_session.previewError().isEmpty())
-        m_previewStatus->setText(tr("The cut fails: %1").arg(m_session.previewError()));
-    else if (!preview)
+    else if (!m_preview.error().isEmpty())
+        m_previewStatus->setText(tr("The cut fails: %1").arg(m_preview.error()));
+    else if (!m_preview.isReady())
         m_previewStatus->setText(tr("Computing the preview..."));
     else
         m_previewStatus->setText(tr("Preview of the pending cut (not applied yet)."));
@@ -218,9 +219,9 @@ void CutPanel::updatePreview() {
             if (k == key)
                 label->setText(text);
     };
-    set(QStringLiteral("tets"), beforeAfter(QString::number(current->mesh.tetCount()),
-                                            QString::number(preview->mesh.tetCount())));
-    set(QStringLiteral("added_tets"), QString::number(preview->mesh.tetCount() - current->mesh.tetCount()));
+    set(QStringLiteral("tets"), beforeAfter(QString::number(current->mesh().tetCount()),
+                                            QString::number(preview->mesh().tetCount())));
+    set(QStringLiteral("added_tets"), QString::number(preview->mesh().tetCount() - current->mesh().tetCount()));
     set(QStringLiteral("cut_edges"), QString::number(c.cutEdges));
     set(QStringLiteral("cut_nodes"), QString::number(c.cutNodes));
     set(QStringLiteral("snapped_nodes"),
@@ -243,7 +244,7 @@ void CutPanel::updatePreview() {
 
 void CutPanel::apply() {
     QString error;
-    if (!m_session.applyPending(&error))
+    if (!m_preview.apply(&error))
         emit applyFailed(error);
 }
 

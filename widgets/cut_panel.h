@@ -6,8 +6,9 @@
 // Discard drops it.
 //
 // Edits go through the ScenarioDocument (undoable; consecutive changes of one number merge
-// into one undo step); the panel follows the document on undo and redo. The preview comes
-// from the TissueSession, which recomputes it whenever a setting changes.
+// into one undo step); the panel follows the document on undo and redo. The pending cut and
+// its preview are CutPreview's, which recomputes the preview whenever the current tissue
+// (TissueSession) changes, settings included; Apply and Discard ask it.
 
 #include <QWidget>
 
@@ -21,6 +22,7 @@ class QSpinBox;
 
 namespace resect {
 
+class CutPreview;
 class ScenarioDocument;
 class TissueSession;
 
@@ -28,7 +30,7 @@ class CutPanel : public QWidget {
     Q_OBJECT
 
 public:
-    CutPanel(ScenarioDocument& document, TissueSession& session, QWidget* parent = nullptr);
+    CutPanel(ScenarioDocument& document, TissueSession& session, CutPreview& preview, QWidget* parent = nullptr);
 
     /// The preview's figures as shown, by key ("tets", "added_tets", "cut_edges",
     /// "cut_nodes", "snapped_nodes", "decomposed_tets", "separated_tets", "pieces",
@@ -47,6 +49,7 @@ private:
 
     ScenarioDocument& m_document;
     TissueSession& m_session;
+    CutPreview& m_preview;
     bool m_syncing = false;
 
     QComboBox* m_method = nullptr;

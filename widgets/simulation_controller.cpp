@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 namespace resect {
 
@@ -16,34 +17,44 @@ SimulationController::SimulationController(ScenarioDocument& document, TissueSes
     : QObject(parent), m_document(document), m_session(session) {
     m_timer.setInterval(kTickMs);
     connect(&m_timer, &QTimer::timeout, this, &SimulationController::tick);
-    connect(&m_session, &TissueSession::currentChanged, this, &SimulationController::reset);
-    connect(&m_document, &ScenarioDocument::effectsChanged, this, &SimulationController::reset);
+    connect(&m_session, &TissueSession::currentChanged, this, &SimulationController::followCurrent);
+    // A new document announces its effects too: its simulation is built once the session
+    // publishes its tissue (at once if it has none: the session has already said so).
+    connect(&m_document, &ScenarioDocument::documentReset, this, [this] { m_newDocument = m_session.isBusy(); });
+    connect(&m_document, &ScenarioDocument::effectsChanged, this, [this] {
+        if (!m_newDocument)
+            reset();
+    });
     reset();
 }
 
 SimulationController::~SimulationController() = default;
 
-double SimulationController::time() const { return m_sim ? m_sim->time() : 0.0; }
-long long SimulationController::steps() const { return m_sim ? m_sim->stepsTaken() : 0; }
+double SimulationController::time() const { return m_tissue.simulator() ? m_tissue.simulator()->time() : 0.0; }
+long long SimulationController::steps() const {
+    return m_tissue.simulator() ? m_tissue.simulator()->stepsTaken() : 0;
+}
 
 std::vector<std::string> SimulationController::effectNames() const {
-    return m_sim ? m_sim->effectNames() : std::vector<std::string>{};
+    return m_tissue.simulator() ? m_tissue.simulator()->effectNames() : std::vector<std::string>{};
 }
 
 std::vector<std::pair<std::string, double>> SimulationController::effectMsPerStep() const {
     std::vector<std::pair<std::string, double>> out;
-    if (!m_sim)
+    const Simulator* sim = m_tissue.simulator();
+    if (!sim)
         return out;
-    const double n = std::max(1, m_sim->stepsTaken());
-    for (const EffectTime& e : m_sim->totalTimes())
+    const double n = std::max(1, sim->stepsTaken());
+    for (const EffectTime& e : sim->totalTimes())
         out.emplace_back(e.name, e.ms / n);
     return out;
 }
 
 double SimulationController::msPerSimulatedSecond() const {
-    if (!m_sim || m_sim->time() <= 0)
+    const Simulator* sim = m_tissue.simulator();
+    if (!sim || sim->time() <= 0)
         return 0;
-    return m_computeMs / m_sim->time();
+    return m_computeMs / sim->time();
 }
 
 void SimulationController::setSpeed(double speed) {
@@ -51,42 +62,80 @@ void SimulationController::setSpeed(double speed) {
         m_speed = speed;
 }
 
+void SimulationController::followCurrent() {
+    const bool newDocument = std::exchange(m_newDocument, false);
+    const auto current = m_session.current();
+    const int appended = current && m_followed && !newDocument && isReady()
+                             ? appendedCuts(m_followed->applied, current->applied)
+                             : -1;
+    if (appended < 0) {
+        reset();
+        return;
+    }
+    if (appended == 0) {
+        m_followed = current;
+        return;
+    }
+    if (!followCuts(*current, appended)) {
+        reset(); // the deformed tissue could not take the cut: start again from the current state
+        return;
+    }
+    m_followed = current;
+    emit cutsFollowed();
+}
+
+bool SimulationController::followCuts(const TissueState& current, int appended) {
+    const std::vector<SweepSurface>& sweeps = current.applied.sweeps;
+    for (std::size_t i = sweeps.size() - static_cast<std::size_t>(appended); i < sweeps.size(); ++i)
+        if (!m_tissue.cut(sweeps[i], current.applied.options).ok())
+            return false;
+    m_tissue.updateSurface();
+    updateTimeStep();
+    return true;
+}
+
+void SimulationController::updateTimeStep() {
+    Simulator* sim = m_tissue.simulator();
+    m_stableDt = sim->stableTimeStep();
+    m_dt = sim->timeStep();
+    if (m_explicitStable && sim->findEffect("tool-contact") != nullptr)
+        m_dt *= kLargeDeformationMargin; // as replay does with tool contact (replay.h)
+}
+
 void SimulationController::reset() {
     const bool wasPlaying = isPlaying();
     m_timer.stop();
-    m_sim.reset();
+    m_tissue = Tissue();
+    m_followed.reset();
     m_error.clear();
     m_computeMs = 0;
     m_dt = m_stableDt = 0;
     const auto current = m_session.current();
     const Scenario& scenario = m_document.scenario();
-    if (!current || scenario.tissues.empty() || current->mesh.empty()) {
-        m_mesh = {};
-        m_surface = {};
+    const auto done = [&] {
         emit resetDone();
         if (wasPlaying)
             emit playingChanged(false);
+    };
+    if (!current || scenario.tissues.empty() || current->tissue.empty()) {
+        done();
         return;
     }
-    m_mesh = current->mesh;
-    m_surface = current->surface;
+    m_tissue = Tissue(current->tissue);
+    m_followed = current;
+    // The simulation's settings as replay takes them (the plan's anchors are not used: the
+    // tissue holds its own, which followed its cuts).
     ReplayPlan plan;
-    Status status = planLoadedTissue(scenario, scenario.tissues.front(), m_mesh, {}, plan);
+    Status status = planLoadedTissue(scenario, scenario.tissues.front(), current->mesh(), {}, plan);
     if (status.ok()) {
         if (std::find(plan.effects.begin(), plan.effects.end(), "tool-contact") != plan.effects.end())
-            plan.effectSettings.tool.points = withdrawnTool(plan.effectSettings.tool.points, m_mesh);
+            plan.effectSettings.tool.points = withdrawnTool(plan.effectSettings.tool.points, m_tissue.mesh());
         // The studio may use both cores; replay stays on one for reproducibility.
         plan.simulation.threads = 0;
         plan.effectSettings.threads = 0;
-        m_sim = std::make_unique<Simulator>(m_mesh, plan.material, plan.simulation);
-        for (const std::string& name : plan.effects)
-            if (Status s = m_sim->addEffect(name, plan.effectSettings); !s.ok()) {
-                status = Status::error("effect '" + name + "': " + s.message());
-                break;
-            }
+        status = m_tissue.startSimulation(simulationSetup(plan));
     }
     if (!status.ok()) {
-        m_sim.reset();
         m_error = QString::fromStdString(status.message());
         emit resetDone();
         emit failed(m_error);
@@ -94,21 +143,16 @@ void SimulationController::reset() {
             emit playingChanged(false);
         return;
     }
-    m_stableDt = m_sim->stableTimeStep();
-    m_dt = m_sim->timeStep();
-    const bool tool = m_sim->findEffect("tool-contact") != nullptr;
-    if (plan.simulation.dt <= 0 && tool && isExplicit(plan.simulation.integrator))
-        m_dt *= kLargeDeformationMargin; // as replay does with tool contact (replay.h)
-    emit resetDone();
-    if (wasPlaying)
-        emit playingChanged(false);
+    m_explicitStable = plan.simulation.dt <= 0 && isExplicit(plan.simulation.integrator);
+    updateTimeStep();
+    done();
 }
 
 void SimulationController::play() {
-    if (!m_sim || isPlaying())
+    if (!isReady() || isPlaying())
         return;
     m_wall.start();
-    m_wallStartSim = m_sim->time();
+    m_wallStartSim = time();
     m_timer.start();
     emit playingChanged(true);
 }
@@ -121,16 +165,16 @@ void SimulationController::pause() {
 }
 
 bool SimulationController::stepOnce() {
-    if (!m_sim || !(m_dt > 0) || !std::isfinite(m_dt)) {
+    if (!isReady() || !(m_dt > 0) || !std::isfinite(m_dt)) {
         m_error = tr("The simulation has no usable time step.");
         return false;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    const Status s = m_sim->step(m_dt);
+    const Status s = m_tissue.step(m_dt);
     m_computeMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (!s.ok()) {
         m_error = tr("The simulation diverged at t = %1 s: %2")
-                      .arg(m_sim->time())
+                      .arg(time())
                       .arg(QString::fromStdString(s.message()));
         return false;
     }
@@ -143,14 +187,13 @@ bool SimulationController::step() {
         emit failed(m_error);
         return false;
     }
-    if (!m_surface.empty())
-        m_surface.update(m_mesh);
+    m_tissue.updateSurface();
     emit stepped();
     return true;
 }
 
 void SimulationController::tick() {
-    if (!m_sim) {
+    if (!isReady()) {
         pause();
         return;
     }
@@ -158,7 +201,7 @@ void SimulationController::tick() {
     const auto start = std::chrono::steady_clock::now();
     bool ok = true;
     int taken = 0;
-    while (m_sim->time() + 0.5 * m_dt < target) {
+    while (time() + 0.5 * m_dt < target) {
         if (!stepOnce()) {
             ok = false;
             break;
@@ -168,13 +211,12 @@ void SimulationController::tick() {
             kTickBudgetMs) {
             // Behind real time: let the clock slip instead of blocking the GUI.
             m_wall.start();
-            m_wallStartSim = m_sim->time();
+            m_wallStartSim = time();
             break;
         }
     }
     if (taken > 0 || !ok) {
-        if (!m_surface.empty())
-            m_surface.update(m_mesh);
+        m_tissue.updateSurface();
         emit stepped();
     }
     if (!ok) {

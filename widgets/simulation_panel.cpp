@@ -96,6 +96,7 @@ SimulationPanel::SimulationPanel(ScenarioDocument& document, SimulationControlle
     connect(m_reset, &QPushButton::clicked, &m_controller, &SimulationController::reset);
     connect(&m_controller, &SimulationController::playingChanged, this, &SimulationPanel::updateState);
     connect(&m_controller, &SimulationController::resetDone, this, &SimulationPanel::updateState);
+    connect(&m_controller, &SimulationController::cutsFollowed, this, &SimulationPanel::updateFigures);
     connect(&m_controller, &SimulationController::stepped, this, &SimulationPanel::updateFigures);
     connect(&m_controller, &SimulationController::failed, this, &SimulationPanel::updateState);
     connect(&m_document, &ScenarioDocument::effectsChanged, this, &SimulationPanel::syncEffects);

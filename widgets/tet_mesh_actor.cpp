@@ -24,28 +24,6 @@ constexpr double kTissueColour[3] = {0.90, 0.62, 0.60};
 
 } // namespace
 
-std::vector<Scheme> tetSchemesAfterCut(const CutChanges& changes, int tetCount,
-                                       const std::vector<Scheme>& previous) {
-    std::vector<Scheme> schemes(static_cast<std::size_t>(std::max(tetCount, 0)), Scheme::None);
-    auto previousOf = [&](int t) {
-        return t >= 0 && t < static_cast<int>(previous.size()) ? previous[t] : Scheme::None;
-    };
-    for (int t = 0; t < tetCount; ++t) {
-        if (t < changes.firstNewTet) {
-            const Scheme s = changes.schemeOf(t);
-            schemes[t] = s != Scheme::None ? s : previousOf(t);
-            continue;
-        }
-        const int i = t - changes.firstNewTet;
-        if (i < static_cast<int>(changes.parentOfNewTet.size())) {
-            const int parent = changes.parentOfNewTet[i];
-            const Scheme s = changes.schemeOf(parent);
-            schemes[t] = s != Scheme::None ? s : previousOf(parent);
-        }
-    }
-    return schemes;
-}
-
 TetMeshActor::TetMeshActor()
     : m_boundary(vtkSmartPointer<vtkPolyData>::New()), m_points(vtkSmartPointer<vtkPoints>::New()),
       m_lut(makeQualityLookupTable()), m_mapper(vtkSmartPointer<vtkPolyDataMapper>::New()),

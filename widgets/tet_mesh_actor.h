@@ -49,14 +49,6 @@ inline constexpr const char* kTetIdArray = "tet";
 inline constexpr const char* kRadiusRatioArray = "quality";
 inline constexpr const char* kMinDihedralArray = "min_dihedral";
 
-/// Scheme (Figure 4) that produced every tet of the mesh after a cut: original tets get
-/// changes.schemeOf(t), tets created by the cut the scheme of their parent
-/// (changes.parentOfNewTet); Scheme::None for tets the cut did not touch. `previous` (may
-/// be empty) holds the schemes from earlier cuts, kept where this cut did not classify the
-/// tet.
-std::vector<Scheme> tetSchemesAfterCut(const CutChanges& changes, int tetCount,
-                                       const std::vector<Scheme>& previous = {});
-
 class TetMeshActor {
 public:
     TetMeshActor();
@@ -71,7 +63,7 @@ public:
     bool updatePositions(const TetMesh& mesh);
     void clear();
 
-    /// Scheme that produced each tet (index = tet; see tetSchemesAfterCut), for inspection.
+    /// Scheme that produced each tet (index = tet; Tissue::schemes()), for inspection.
     /// Kept across setMesh(); tets beyond the vector's size count as Scheme::None.
     void setTetSchemes(std::vector<Scheme> schemes);
     Scheme tetScheme(int tet) const;

@@ -3,10 +3,12 @@
 #include "widgets/accuracy_panel.h"
 #include "widgets/authoring_panel.h"
 #include "widgets/cut_panel.h"
+#include "widgets/cut_preview.h"
 #include "widgets/export_runner.h"
 #include "widgets/language.h"
 #include "widgets/quality_panel.h"
 #include "widgets/scenario_document.h"
+#include "widgets/shown_tissue.h"
 #include "widgets/simulation_controller.h"
 #include "widgets/simulation_panel.h"
 #include "widgets/surface_pick.h"
@@ -33,8 +35,6 @@
 #include <QToolBar>
 #include <QUndoStack>
 
-#include <vtkActor.h>
-
 namespace resect {
 
 namespace {
@@ -60,21 +60,22 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setObjectName(QStringLiteral("mainWindow"));
     m_document = new ScenarioDocument(this);
     m_session = new TissueSession(*m_document, this);
+    m_preview = new CutPreview(*m_document, *m_session, this);
     m_simulation = new SimulationController(*m_document, *m_session, this);
 
     m_viewport = new VtkViewport(this);
     m_viewport->setObjectName(QStringLiteral("viewport"));
     setCentralWidget(m_viewport);
 
-    m_cutPanel = new CutPanel(*m_document, *m_session);
+    m_cutPanel = new CutPanel(*m_document, *m_session, *m_preview);
     m_simulationPanel = new SimulationPanel(*m_document, *m_simulation);
     m_authoringPanel = new AuthoringPanel(m_viewport);
     m_accuracyPanel = new AccuracyPanel;
     m_qualityPanel = new QualityPanel;
     m_qualityPanel->attach(m_viewport);
-    // A picked tet is inspected in the mesh on show (the preview, the simulated or the
-    // current tissue).
-    m_qualityPanel->setMeshProvider([this]() -> const TetMesh* { return m_shownMesh; });
+    // The preview, the simulated or the current tissue: on show in the viewport and inspected
+    // by the quality panel.
+    m_shown = new ShownTissue(*m_session, *m_preview, *m_simulation, *m_viewport, *m_qualityPanel, this);
     createActions();
     createDocks();
 
@@ -88,39 +89,35 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_document, &ScenarioDocument::metadataChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ScenarioDocument::recentFilesChanged, this, &MainWindow::updateRecentMenu);
     connect(m_session, &TissueSession::busyChanged, this, &MainWindow::onBusyChanged);
-    connect(m_document, &ScenarioDocument::documentReset, this, [this] { m_frameNext = true; });
-    connect(m_session, &TissueSession::baseChanged, this, &MainWindow::onBaseChanged);
-    connect(m_session, &TissueSession::currentChanged, this, [this] {
-        refreshView(false);
-        updateQualityViews();
-    });
-    connect(m_session, &TissueSession::previewChanged, this, [this] {
-        refreshView(false);
-        updateQualityViews();
+    connect(m_session, &TissueSession::baseChanged, this, &MainWindow::updateStatus);
+    connect(m_session, &TissueSession::currentChanged, this, &MainWindow::updateStatus);
+    connect(m_document, &ScenarioDocument::documentReset, m_shown, &ShownTissue::frameNext);
+    connect(m_shown, &ShownTissue::framed, this, [this] {
+        m_loadedOnce = true;
+        updateStatus();
+        emit meshLoaded();
     });
     connect(m_session, &TissueSession::failed, this, [this](const QString& message) {
         if (!m_loadedOnce || !m_session->base())
             emit loadFailed(message);
         showError(tr("The tissue could not be loaded or cut."), message);
     });
-    connect(m_simulation, &SimulationController::stepped, this, [this] { refreshView(false); });
-    connect(m_simulation, &SimulationController::resetDone, this, [this] { refreshView(false); });
     connect(m_simulation, &SimulationController::failed, this, [this](const QString& message) {
         statusBar()->showMessage(message, 10000);
     });
     // Authoring: what is drawn or recorded becomes the pending cut, previewed live.
-    connect(m_authoringPanel, &AuthoringPanel::sweepFinished, m_session, &TissueSession::setPendingSweep);
-    connect(m_authoringPanel, &AuthoringPanel::strokeRecorded, m_session, &TissueSession::setPendingStroke);
+    connect(m_authoringPanel, &AuthoringPanel::sweepFinished, m_preview, &CutPreview::setPendingSweep);
+    connect(m_authoringPanel, &AuthoringPanel::strokeRecorded, m_preview, &CutPreview::setPendingStroke);
     connect(&m_authoringPanel->sweepEditor(), &SweepEditTool::sweepChanged, this, [this] {
         if (const auto spec = m_authoringPanel->sweepEditor().sweepSpec())
-            m_session->setPendingSweep(*spec);
+            m_preview->setPendingSweep(*spec);
     });
     connect(m_document, &ScenarioDocument::documentReset, this,
             [this] { m_authoringPanel->setToolSpec(m_document->scenario().tool); });
     connect(m_session, &TissueSession::currentChanged, this, [this] {
         // New sweep points and stroke depths are picked on the tissue's boundary.
         if (const auto current = m_session->current())
-            m_authoringPanel->setPickSurface(pickSurfaceOf(current->mesh));
+            m_authoringPanel->setPickSurface(pickSurfaceOf(current->mesh()));
         else
             m_authoringPanel->clearPickSurface();
     });
@@ -187,11 +184,11 @@ void MainWindow::createActions() {
     QMenu* cut = menuBar()->addMenu(tr("&Cut"));
     QAction* apply = cut->addAction(tr("&Apply pending cut"), this, [this] {
         QString error;
-        if (!m_session->applyPending(&error))
+        if (!m_preview->apply(&error))
             showError(tr("The cut was not applied."), error);
     });
     apply->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Return));
-    cut->addAction(tr("&Discard pending cut"), m_session, &TissueSession::discardPending);
+    cut->addAction(tr("&Discard pending cut"), m_preview, &CutPreview::discard);
 
     QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
     QAction* play = sim->addAction(tr("&Play / pause"), this, [this] {
@@ -212,9 +209,10 @@ void MainWindow::createActions() {
     m_showSurface = m_viewMenu->addAction(tr("Show high-resolution &surface"));
     m_showSurface->setCheckable(true);
     m_showSurface->setChecked(false);
-    connect(m_showTets, &QAction::toggled, this, &MainWindow::applyVisibility);
-    connect(m_showSurface, &QAction::toggled, this, &MainWindow::applyVisibility);
-    applyVisibility();
+    m_shown->setTetsVisible(m_showTets->isChecked());
+    m_shown->setSurfaceVisible(m_showSurface->isChecked());
+    connect(m_showTets, &QAction::toggled, m_shown, &ShownTissue::setTetsVisible);
+    connect(m_showSurface, &QAction::toggled, m_shown, &ShownTissue::setSurfaceVisible);
     m_viewMenu->addSeparator();
 
     QMenu* language = menuBar()->addMenu(tr("&Language"));
@@ -455,8 +453,8 @@ void MainWindow::updateStatus() {
     }
     m_statusLabel->setText(tr("%1: %2 nodes, %3 tets, %4 pieces, min radius ratio %5, stable dt %6 s")
                                .arg(current->tissueName)
-                               .arg(current->mesh.nodeCount())
-                               .arg(current->mesh.tetCount())
+                               .arg(current->mesh().nodeCount())
+                               .arg(current->mesh().tetCount())
                                .arg(current->pieces)
                                .arg(current->quality.minRadiusRatio, 0, 'g', 3)
                                .arg(current->stableDt, 0, 'g', 3));
@@ -483,58 +481,6 @@ void MainWindow::onBusyChanged(bool busy) {
     }
 }
 
-void MainWindow::onBaseChanged() {
-    if (!m_session->base()) {
-        m_shownMesh = nullptr;
-        m_shownState.reset();
-        m_viewport->clear();
-        m_qualityPanel->meshChanged();
-        updateQualityViews();
-        updateStatus();
-        return;
-    }
-    // Frame the tissue when it is first shown (its cuts may still be being applied).
-    m_frameNext = true;
-    refreshView(false);
-}
-
-void MainWindow::refreshView(bool frame) {
-    // What is shown: the preview of a pending cut, else the simulated tissue once it has
-    // moved, else the current tissue.
-    const auto preview = m_session->preview();
-    const auto state = preview ? preview : m_session->current();
-    const bool simulated = !preview && state && m_simulation->isReady() && m_simulation->steps() > 0;
-    frame = frame || m_frameNext;
-    if (!state) {
-        m_shownMesh = nullptr;
-        m_shownState.reset();
-        updateStatus();
-        return;
-    }
-    const TetMesh& mesh = simulated ? m_simulation->mesh() : state->mesh;
-    const TriangleSurface& surface = simulated ? m_simulation->surface().surface() : state->surface.surface();
-    // A simulation step only moves points (STYLE.md item 8).
-    if (simulated && !frame && m_shownMesh == &mesh && m_viewport->tetMeshActor().updatePositions(mesh)) {
-        if (m_showSurface->isChecked())
-            m_viewport->setSurface(surface, false);
-        m_viewport->requestRender();
-        return;
-    }
-    m_frameNext = false;
-    m_shownState = state;
-    m_shownMesh = &mesh;
-    m_viewport->setTetMesh(mesh, frame);
-    m_viewport->tetMeshActor().setTetSchemes(state->schemes);
-    m_viewport->setSurface(surface, false);
-    applyVisibility();
-    m_qualityPanel->meshChanged();
-    updateStatus();
-    if (frame) {
-        m_loadedOnce = true;
-        emit meshLoaded();
-    }
-}
-
 void MainWindow::updateAccuracyPanel() {
     const auto base = m_session->base();
     if (!base) {
@@ -548,34 +494,10 @@ void MainWindow::updateAccuracyPanel() {
     if (scenarioCuts(scenario, cuts).ok() && !cuts.empty())
         sweep = cuts.front().sweep;
     else
-        sweep = loopScoopSweep(base->mesh, 0.6);
+        sweep = loopScoopSweep(base->mesh(), 0.6);
     // Shares the session's immutable state without copying it.
-    m_accuracyPanel->setTissue(std::shared_ptr<const TetMesh>(base, &base->mesh), std::move(sweep),
-                               base->tissueName, std::shared_ptr<const EmbeddedSurface>(base, &base->surface));
-}
-
-void MainWindow::applyVisibility() {
-    m_viewport->tetMeshActor().actor()->SetVisibility(m_showTets->isChecked());
-    m_viewport->surfaceActor().actor()->SetVisibility(m_showSurface->isChecked());
-    m_viewport->requestRender();
-}
-
-void MainWindow::updateQualityViews() {
-    // Before and after: the current tissue and its preview while a cut is pending, else the
-    // uncut tissue and the current one once the document has cuts.
-    const auto preview = m_session->preview();
-    const auto current = m_session->current();
-    const auto base = m_session->base();
-    const auto before = preview ? current : base;
-    const auto after = preview ? preview : (current && current->cuts > 0 ? current : nullptr);
-    if (before)
-        m_qualityPanel->setBeforeMesh(before->mesh, before->stableDt);
-    else
-        m_qualityPanel->clearBefore();
-    if (after)
-        m_qualityPanel->setAfterMesh(after->mesh, after->stableDt);
-    else
-        m_qualityPanel->clearAfter();
+    m_accuracyPanel->setTissue(std::shared_ptr<const TetMesh>(base, &base->mesh()), std::move(sweep),
+                               base->tissueName, std::shared_ptr<const EmbeddedSurface>(base, &base->surface()));
 }
 
 void MainWindow::setLanguagePreference(const QString& code) {

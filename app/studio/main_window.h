@@ -1,7 +1,8 @@
 #pragma once
-// MainWindow: the studio's main window. It only assembles: the document model
+// MainWindow: the studio's main window. It only assembles and routes: the document model
 // (ScenarioDocument, the single source of truth with its undo stack), the tissue derived
-// from it on a worker thread (TissueSession), the simulation (SimulationController), the
+// from it on a worker thread (TissueSession), the pending cut and its preview (CutPreview),
+// the simulation (SimulationController), what the views show of them (ShownTissue), the
 // 3-D view and the panels, which all observe the document; menus and tool bars call the
 // document's edits.
 
@@ -24,11 +25,11 @@ namespace resect {
 class AccuracyPanel;
 class AuthoringPanel;
 class CutPanel;
+class CutPreview;
 class ExportRunner;
 class QualityPanel;
-struct TissueState;
-class TetMesh;
 class ScenarioDocument;
+class ShownTissue;
 class SimulationController;
 class SimulationPanel;
 class TissueSession;
@@ -62,7 +63,9 @@ public:
     VtkViewport* viewport() const { return m_viewport; }
     ScenarioDocument& document() { return *m_document; }
     TissueSession& session() { return *m_session; }
+    CutPreview& cutPreview() { return *m_preview; }
     SimulationController& simulation() { return *m_simulation; }
+    ShownTissue& shownTissue() { return *m_shown; }
     CutPanel* cutPanel() const { return m_cutPanel; }
     SimulationPanel* simulationPanel() const { return m_simulationPanel; }
     AuthoringPanel* authoringPanel() const { return m_authoringPanel; }
@@ -108,17 +111,14 @@ private:
     void updateRecentMenu();
     void updateStatus();
     void onBusyChanged(bool busy);
-    void onBaseChanged();
-    void refreshView(bool frame);
-    void updateQualityViews();
-    /// The View menu's choice of tet mesh and high-resolution surface.
-    void applyVisibility();
     void updateAccuracyPanel();
     void setLanguagePreference(const QString& code);
 
     ScenarioDocument* m_document = nullptr;
     TissueSession* m_session = nullptr;
+    CutPreview* m_preview = nullptr;
     SimulationController* m_simulation = nullptr;
+    ShownTissue* m_shown = nullptr;
 
     VtkViewport* m_viewport = nullptr;
     CutPanel* m_cutPanel = nullptr;
@@ -126,10 +126,6 @@ private:
     AuthoringPanel* m_authoringPanel = nullptr;
     QualityPanel* m_qualityPanel = nullptr;
     AccuracyPanel* m_accuracyPanel = nullptr;
-    /// The state whose mesh is on show (kept alive while shown) and the mesh itself (the
-    /// state's, or the simulation's).
-    std::shared_ptr<const TissueState> m_shownState;
-    const TetMesh* m_shownMesh = nullptr;
     ExportRunner* m_export = nullptr;
     QLabel* m_statusLabel = nullptr;
     QProgressDialog* m_progress = nullptr;
@@ -141,7 +137,6 @@ private:
     bool m_errorDialogs = true;
     QMessageBox::StandardButton m_unsavedAnswer = QMessageBox::NoButton;
     bool m_loadedOnce = false;
-    bool m_frameNext = false; ///< frame the next mesh shown (a new document or tissue)
 };
 
 } // namespace resect

@@ -1,11 +1,15 @@
-// TissueSession: the tissue derived from the document on a worker thread (load, cuts,
-// preview, apply, undo and redo), on the sample polyp.
+// TissueSession: base and current derived from the document on a worker thread (load, cuts,
+// undo and redo, settings), on the samples and the example polyp scenario. Current must be
+// bit-identical to a Tissue made and cut directly as replay does it.
 
 #include "core/mesh/validity.h"
+#include "scenario/replay.h"
+#include "scenario/scenario_run.h"
 #include "widgets/scenario_document.h"
 #include "widgets/tissue_session.h"
 
 #include "tests/widgets/sweep_fixtures.h"
+#include "tests/widgets/tissue_compare.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -13,11 +17,29 @@
 
 using namespace resect;
 using resect::test::planeSweep;
+using resect::test::tissueDifference;
 
 namespace {
 
 constexpr int kWaitMs = 120'000;
 
+const QString kPolypScenario =
+    QStringLiteral(RESECT_SOURCE_DIR "/resources/scenarios/polyp-resection.json");
+
+/// The first tissue of `scenario` made as replay makes it (planTissue, makeTissue) and cut by
+/// every cut of the scenario in replay order with the scenario's cut settings.
+Status cutDirectly(const Scenario& scenario, Tissue& out) {
+    ReplayPlan plan;
+    if (Status s = planTissue(scenario, scenario.tissues.front(), plan); !s.ok())
+        return s;
+    if (Status s = makeTissue(plan, out); !s.ok())
+        return s;
+    for (const ReplayStroke& stroke : plan.strokes)
+        if (Status s = out.cut(stroke.sweep, plan.cut); !s.ok())
+            return Status::error(stroke.name + ": " + s.message());
+    out.updateSurface();
+    return Status::success();
+}
 
 } // namespace
 
@@ -34,121 +56,140 @@ private slots:
         doc.setAutosaveDirectory(m_dir.path());
         TissueSession session(doc);
         QSignalSpy base(&session, &TissueSession::baseChanged);
+        QSignalSpy current(&session, &TissueSession::currentChanged);
         QVERIFY(doc.newFromSample(QStringLiteral("polyp")));
         // The request runs on the worker: the call returns before the tissue is there.
         QVERIFY(session.isBusy());
         QVERIFY(!session.base());
         QVERIFY(session.waitForIdle(kWaitMs));
         QCOMPARE(base.count(), 1);
+        QCOMPARE(current.count(), 1);
         QVERIFY(session.error().isEmpty());
         const auto b = session.base();
-        QVERIFY(b && b->mesh.tetCount() > 100);
-        QVERIFY(!b->surface.empty());
+        QVERIFY(b && b->mesh().tetCount() > 100);
+        QVERIFY(!b->surface().empty());
         QCOMPARE(b->pieces, 1);
         QVERIFY(b->stableDt > 0);
-        QCOMPARE(session.current()->mesh.tetCount(), b->mesh.tetCount());
-        QVERIFY(!session.preview());
+        QCOMPARE(b->cuts(), 0);
+        QCOMPARE(b->tissue.cutCount(), 0);
+        QVERIFY(b->applied.baseId != 0);
+        QCOMPARE(b->tissueName, QStringLiteral("polyp"));
+        for (Scheme s : b->tissue.schemes())
+            QCOMPARE(s, Scheme::None);
+        // No cuts: current is a copy of base, not base itself, from the same base.
+        const auto c = session.current();
+        QVERIFY(c && c != b);
+        QCOMPARE(c->applied.baseId, b->applied.baseId);
+        QCOMPARE(c->cuts(), 0);
+        QCOMPARE(tissueDifference(c->tissue, b->tissue), QString());
     }
 
-    void previewFollowsSettingsApplyUndoRedo() {
+    // The example scenario: three strokes, snapping and relaxation, an anchored stalk.
+    void currentIsTheDocumentsCutsAppliedLikeReplay() {
+        ScenarioDocument doc;
+        doc.setAutosaveDirectory(m_dir.path());
+        TissueSession session(doc);
+        QString error;
+        QVERIFY2(doc.open(kPolypScenario, &error), qPrintable(error));
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QVERIFY2(session.error().isEmpty(), qPrintable(session.error()));
+        const Scenario& scenario = doc.scenario();
+        QCOMPARE(int(scenario.strokes.size()), 3);
+
+        // Base: the loaded tissue with the fixed region's nodes anchored, as replay makes it.
+        ReplayPlan plan;
+        QVERIFY(planTissue(scenario, scenario.tissues.front(), plan).ok());
+        const auto base = session.base();
+        QVERIFY(!plan.anchors.nodes.empty());
+        QCOMPARE(base->tissue.anchors().nodes(), plan.anchors.nodes);
+        QCOMPARE(base->mesh().tetCount(), plan.mesh.tetCount());
+
+        // Current: the three strokes cut in order, bit-identical to cutting directly.
+        Tissue direct;
+        QVERIFY(cutDirectly(scenario, direct).ok());
+        auto current = session.current();
+        QCOMPARE(current->cuts(), 3);
+        QCOMPARE(current->tissue.cutCount(), 3);
+        QCOMPARE(tissueDifference(current->tissue, direct), QString());
+        QVERIFY(current->mesh().tetCount() > base->mesh().tetCount());
+        QCOMPARE(current->pieces, direct.pieces().count);
+        QVERIFY(current->pieces >= 2); // the head is off (the scenario expects it)
+        QVERIFY(current->surfaceCapTriangles > 0);
+        QVERIFY(current->cutStats.cutEdges + current->cutStats.cutNodes > 0);
+        QVERIFY(checkValidity(current->mesh()).empty());
+        // Every tet the cuts added was produced by a scheme (Figure 4).
+        QCOMPARE(int(current->tissue.schemes().size()), current->mesh().tetCount());
+        for (int t = base->mesh().tetCount(); t < current->mesh().tetCount(); ++t)
+            QVERIFY2(current->tissue.schemes()[t] != Scheme::None, qPrintable(QString::number(t)));
+
+        // An added sweep is cut on a copy of current: still bit-identical to cutting directly.
+        doc.addSweep(planeSweep(base->mesh(), 0.3, 1e-3));
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QVERIFY2(session.error().isEmpty(), qPrintable(session.error()));
+        direct = Tissue();
+        QVERIFY(cutDirectly(doc.scenario(), direct).ok());
+        current = session.current();
+        QCOMPARE(current->cuts(), 4);
+        QCOMPARE(tissueDifference(current->tissue, direct), QString());
+
+        // Other settings re-apply every cut on a copy of base.
+        doc.setD(0.3);
+        QVERIFY(session.waitForIdle(kWaitMs));
+        direct = Tissue();
+        QVERIFY(cutDirectly(doc.scenario(), direct).ok());
+        const auto at03 = session.current();
+        QCOMPARE(at03->applied.options.d, 0.3);
+        QCOMPARE(tissueDifference(at03->tissue, direct), QString());
+        QVERIFY(at03->mesh().tetCount() != current->mesh().tetCount());
+
+        // Undo: back to d = 0.2, the same tissue as before the settings changed.
+        doc.undoStack()->undo();
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QCOMPARE(session.current()->applied.options.d, 0.2);
+        QCOMPARE(tissueDifference(session.current()->tissue, current->tissue), QString());
+    }
+
+    void addUndoRedoACut() {
         ScenarioDocument doc;
         doc.setAutosaveDirectory(m_dir.path());
         TissueSession session(doc);
         QVERIFY(doc.newFromSample(QStringLiteral("polyp")));
         QVERIFY(session.waitForIdle(kWaitMs));
-        const int tets = session.current()->mesh.tetCount();
-        const double volume = session.current()->quality.volume;
+        const auto uncut = session.current();
+        const int tets = uncut->mesh().tetCount();
+        const double volume = uncut->quality.volume;
 
-        // A pending cut previews without touching the document.
-        session.setPendingSweep(planeSweep(session.base()->mesh, 0.6, 1e-3));
-        QVERIFY(session.hasPending());
+        doc.addSweep(planeSweep(session.base()->mesh(), 0.6, 1e-3));
         QVERIFY(session.waitForIdle(kWaitMs));
-        QVERIFY2(session.previewError().isEmpty(), qPrintable(session.previewError()));
-        const auto p1 = session.preview();
-        QVERIFY(p1);
-        QVERIFY(p1->mesh.tetCount() > tets);
-        QCOMPARE(p1->pieces, 2);
-        QVERIFY(std::abs(p1->quality.volume - volume) < 1e-9 * volume);
-        QVERIFY(p1->cutStats.cutEdges + p1->cutStats.cutNodes > 0);
-        QVERIFY(doc.scenario().sweeps.empty());
-        QVERIFY(!doc.isModified());
-        QCOMPARE(session.current()->mesh.tetCount(), tets);
-        // Schemes: every new tet was produced by one.
-        for (int t = tets; t < p1->mesh.tetCount(); ++t)
-            QVERIFY(p1->schemes[t] != Scheme::None);
+        const auto cut = session.current();
+        QVERIFY(cut->mesh().tetCount() > tets);
+        QCOMPARE(cut->cuts(), 1);
+        QCOMPARE(cut->pieces, 2);
+        QVERIFY(std::abs(cut->quality.volume - volume) < 1e-9 * volume);
+        QVERIFY(cut->surfaceCapTriangles > 0);
+        QVERIFY(checkValidity(cut->mesh()).empty());
+        QCOMPARE(appendedCuts(uncut->applied, cut->applied), 1);
 
-        // d = 0 (every crossed edge split) and d = 0.45 (many cut nodes) give other counts.
-        doc.setD(0.0);
+        doc.undoStack()->undo();
         QVERIFY(session.waitForIdle(kWaitMs));
-        const int tets0 = session.preview()->mesh.tetCount();
-        doc.setD(0.45);
-        QVERIFY(session.waitForIdle(kWaitMs));
-        const int tets45 = session.preview()->mesh.tetCount();
-        QVERIFY2(tets0 > tets45, qPrintable(QStringLiteral("%1 %2").arg(tets0).arg(tets45)));
-        QCOMPARE(session.preview()->cutStats.cutNodes > 0, true);
-
-        // Apply: the cut enters the document (one undo step) and the current state.
-        QVERIFY(session.applyPending());
-        QVERIFY(!session.hasPending());
-        QCOMPARE(int(doc.scenario().sweeps.size()), 1);
-        QVERIFY(session.waitForIdle(kWaitMs));
-        const int cutTets = session.current()->mesh.tetCount();
-        QCOMPARE(cutTets, tets45);
-        QCOMPARE(session.current()->cuts, 1);
-        QCOMPARE(session.current()->pieces, 2);
-        QVERIFY(session.current()->surfaceCapTriangles > 0);
-        QVERIFY(checkValidity(session.current()->mesh).empty());
-
-        doc.undoStack()->undo(); // the sweep
-        QVERIFY(session.waitForIdle(kWaitMs));
-        QCOMPARE(session.current()->cuts, 0);
-        QCOMPARE(session.current()->mesh.tetCount(), tets);
+        QCOMPARE(session.current()->cuts(), 0);
+        QCOMPARE(session.current()->mesh().tetCount(), tets);
+        QCOMPARE(appendedCuts(cut->applied, session.current()->applied), -1);
         doc.undoStack()->redo();
         QVERIFY(session.waitForIdle(kWaitMs));
-        QCOMPARE(session.current()->mesh.tetCount(), cutTets);
-
-        // Nothing pending: apply refuses with a reason.
-        QString error;
-        QVERIFY(!session.applyPending(&error));
-        QVERIFY(!error.isEmpty());
+        QCOMPARE(tissueDifference(session.current()->tissue, cut->tissue), QString());
     }
 
-    void discardDropsThePreview() {
-        ScenarioDocument doc;
-        doc.setAutosaveDirectory(m_dir.path());
-        TissueSession session(doc);
-        QVERIFY(doc.newFromSample(QStringLiteral("myoma")));
-        QVERIFY(session.waitForIdle(kWaitMs));
-        session.setPendingSweep(planeSweep(session.base()->mesh, 0.5, 1e-3));
-        QVERIFY(session.waitForIdle(kWaitMs));
-        QVERIFY(session.preview());
-        QSignalSpy changed(&session, &TissueSession::previewChanged);
-        session.discardPending();
-        QCOMPARE(changed.count(), 1);
-        QVERIFY(!session.preview());
-        QVERIFY(!session.hasPending());
-        QVERIFY(!doc.isModified());
-    }
-
-    void badCutsAndTissuesAreReportedNotFatal() {
+    void badTissuesAreReportedNotFatal() {
         ScenarioDocument doc;
         doc.setAutosaveDirectory(m_dir.path());
         TissueSession session(doc);
         QVERIFY(doc.newFromSample(QStringLiteral("polyp")));
         QVERIFY(session.waitForIdle(kWaitMs));
-        // A sweep whose curves have different point counts: the preview fails with a reason.
-        SweepSpec bad;
-        bad.curves = {{Vec3(0, 0, 0), Vec3(1, 0, 0)}, {Vec3(0, 1, 0)}};
-        session.setPendingSweep(bad);
-        QVERIFY(session.waitForIdle(kWaitMs));
-        QVERIFY(!session.preview());
-        QVERIFY(!session.previewError().isEmpty());
-        QString error;
-        QVERIFY(!session.applyPending(&error));
-        QVERIFY(error.contains(session.previewError().left(10)) || !error.isEmpty());
-        QVERIFY(doc.scenario().sweeps.empty());
+        QVERIFY(session.base());
 
-        // A surface that is not a closed surface: loading fails with a message, no crash.
+        // A surface that is not a closed surface: loading fails with a message, no crash,
+        // and nothing of the previous tissue stays.
         const QString path = m_dir.filePath(QStringLiteral("open.obj"));
         QFile f(path);
         QVERIFY(f.open(QIODevice::WriteOnly));
@@ -159,17 +200,37 @@ private slots:
         QVERIFY(session.waitForIdle(kWaitMs));
         QCOMPARE(failed.count(), 1);
         QVERIFY(failed.first().first().toString().contains(QStringLiteral("open")));
+        QCOMPARE(session.error(), failed.first().first().toString());
+        QVERIFY(!session.base());
+        QVERIFY(!session.current());
     }
 
     void aNewerDocumentSupersedesALoadingOne() {
         ScenarioDocument doc;
         doc.setAutosaveDirectory(m_dir.path());
         TissueSession session(doc);
+        QSignalSpy base(&session, &TissueSession::baseChanged);
         QVERIFY(doc.newFromSample(QStringLiteral("polyp")));
         QVERIFY(doc.newFromSample(QStringLiteral("myoma")));
         QVERIFY(session.waitForIdle(kWaitMs));
         QCOMPARE(session.base()->tissueName, QStringLiteral("myoma"));
+        QCOMPARE(session.current()->tissueName, QStringLiteral("myoma"));
+        QCOMPARE(base.count(), 1); // the polyp was never published
         QVERIFY(session.error().isEmpty());
+    }
+
+    void aNewDocumentOnTheSameTissueReusesTheBase() {
+        ScenarioDocument doc;
+        doc.setAutosaveDirectory(m_dir.path());
+        TissueSession session(doc);
+        QVERIFY(doc.newFromSample(QStringLiteral("myoma")));
+        QVERIFY(session.waitForIdle(kWaitMs));
+        const auto first = session.base();
+        QSignalSpy base(&session, &TissueSession::baseChanged);
+        QVERIFY(doc.newFromSample(QStringLiteral("myoma")));
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QCOMPARE(session.base(), first); // not meshed again
+        QCOMPARE(base.count(), 1);       // but the views reframe
     }
 };
 

@@ -10,10 +10,12 @@
 #include "widgets/quality_panel.h"
 #include "scenario/accuracy_study.h"
 #include "widgets/cut_panel.h"
+#include "widgets/cut_preview.h"
 #include "widgets/stroke_recorder.h"
 #include "widgets/scenario_document.h"
 #include "widgets/simulation_controller.h"
 #include "widgets/simulation_panel.h"
+#include "widgets/shown_tissue.h"
 #include "widgets/tissue_session.h"
 #include "widgets/vtk_viewport.h"
 
@@ -52,10 +54,11 @@ struct Studio {
     bool load(Sample sample = Sample::Polyp) {
         QSignalSpy loaded(&window, &MainWindow::meshLoaded);
         window.openSample(sample);
-        return loaded.wait(kWaitMs) && window.session().waitForIdle(kWaitMs);
+        return loaded.wait(kWaitMs) && idle();
     }
-    bool idle() { return window.session().waitForIdle(kWaitMs); }
-    int tets() { return window.session().current()->mesh.tetCount(); }
+    /// The session and the preview are idle.
+    bool idle() { return window.cutPreview().waitForIdle(kWaitMs); }
+    int tets() { return window.session().current()->mesh().tetCount(); }
     QAction* action(const char* name) { return window.findChild<QAction*>(QString::fromLatin1(name)); }
 };
 
@@ -94,7 +97,7 @@ private slots:
         CutPanel* panel = s.window.cutPanel();
         QCOMPARE(panel->previewValue(QStringLiteral("tets")), QString());
 
-        s.window.session().setPendingSweep(planeSweep(s.window.session().base()->mesh, 0.6));
+        s.window.cutPreview().setPendingSweep(planeSweep(s.window.session().base()->mesh(), 0.6));
         QVERIFY(s.idle());
         const QString at02 = panel->previewValue(QStringLiteral("added_tets"));
         QVERIFY(!at02.isEmpty());
@@ -171,11 +174,11 @@ private slots:
         QVERIFY(!panel->strokeRecorder().isRecording());
 
         // The stroke is the pending cut: its sweep is previewed, then applied.
-        QVERIFY(s.window.session().hasPending());
+        QVERIFY(s.window.cutPreview().hasPending());
         QVERIFY(s.idle());
-        QVERIFY2(s.window.session().previewError().isEmpty(), qPrintable(s.window.session().previewError()));
-        QVERIFY(s.window.session().preview());
-        const int previewTets = s.window.session().preview()->mesh.tetCount();
+        QVERIFY2(s.window.cutPreview().error().isEmpty(), qPrintable(s.window.cutPreview().error()));
+        QVERIFY(s.window.cutPreview().preview());
+        const int previewTets = s.window.cutPreview().preview()->mesh().tetCount();
         QVERIFY(previewTets > tets);
         QCOMPARE(panel->lastStroke().poses.size(), std::size_t(13));
         QVERIFY(panel->lastStroke().poses.back().t > panel->lastStroke().poses.front().t);
@@ -192,9 +195,9 @@ private slots:
         {
             Studio s;
             QVERIFY(s.load());
-            s.window.session().setPendingSweep(planeSweep(s.window.session().base()->mesh, 0.55));
+            s.window.cutPreview().setPendingSweep(planeSweep(s.window.session().base()->mesh(), 0.55));
             QVERIFY(s.idle());
-            QVERIFY(s.window.session().applyPending());
+            QVERIFY(s.window.cutPreview().apply());
             s.window.document().toggleEffect(QStringLiteral("gravity"));
             QVERIFY(s.idle());
             QVERIFY(s.window.saveAs(path));
@@ -211,7 +214,7 @@ private slots:
         QCOMPARE(reopened.effects, saved.effects);
         QCOMPARE(reopened.cut, saved.cut);
         QCOMPARE(reopened.tissues, saved.tissues);
-        QCOMPARE(s.window.session().current()->cuts, 1);
+        QCOMPARE(s.window.session().current()->cuts(), 1);
         QVERIFY(s.window.document().recentFiles().contains(QFileInfo(path).absoluteFilePath()));
     }
 
@@ -290,13 +293,49 @@ private slots:
         s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
     }
 
+    // What is shown: the preview while a cut is pending, else the simulated tissue once it
+    // moved; a cut applied while simulating is followed by the simulation and shown at once.
+    void aCutAppliedWhileSimulatingIsShownInTheSimulation() {
+        Studio s;
+        QVERIFY(s.load(Sample::Myoma));
+        ShownTissue& shown = s.window.shownTissue();
+        TetMeshActor& actor = s.window.viewport()->tetMeshActor();
+        QCOMPARE(shown.source(), ShownTissue::Source::Current);
+        QCOMPARE(shown.mesh(), &s.window.session().current()->mesh());
+
+        auto* step = s.window.simulationPanel()->findChild<QPushButton*>(QStringLiteral("simStep"));
+        QVERIFY(step);
+        step->click();
+        step->click();
+        QCOMPARE(shown.source(), ShownTissue::Source::Simulation);
+        QCOMPARE(shown.mesh(), &s.window.simulation().mesh());
+        const double time = s.window.simulation().time();
+        const int tets = s.tets();
+
+        s.window.cutPreview().setPendingSweep(planeSweep(s.window.session().base()->mesh(), 0.6));
+        QVERIFY(s.idle());
+        QCOMPARE(shown.source(), ShownTissue::Source::Preview);
+        QCOMPARE(shown.mesh(), &s.window.cutPreview().preview()->mesh());
+        QCOMPARE(actor.tetCount(), s.window.cutPreview().preview()->mesh().tetCount());
+
+        QTest::mouseClick(s.window.cutPanel()->findChild<QPushButton*>(QStringLiteral("applyCut")), Qt::LeftButton);
+        QVERIFY(s.idle());
+        QCOMPARE(s.window.session().current()->cuts(), 1);
+        QCOMPARE(s.window.simulation().time(), time); // followed, not rebuilt
+        QCOMPARE(shown.source(), ShownTissue::Source::Simulation);
+        QVERIFY(s.window.simulation().mesh().tetCount() > tets);
+        QCOMPARE(actor.tetCount(), s.window.simulation().mesh().tetCount());
+        QCOMPARE(actor.tetScheme(actor.tetCount() - 1), s.window.simulation().tissue().schemes().back());
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
     void exportWritesThePackage() {
         Studio s;
         QVERIFY(s.load(Sample::Myoma));
         // A short scenario: the export replays it.
-        s.window.session().setPendingSweep(planeSweep(s.window.session().base()->mesh, 0.7));
+        s.window.cutPreview().setPendingSweep(planeSweep(s.window.session().base()->mesh(), 0.7));
         QVERIFY(s.idle());
-        QVERIFY(s.window.session().applyPending());
+        QVERIFY(s.window.cutPreview().apply());
         QVERIFY(s.idle());
         const QString out = m_dir.filePath(QStringLiteral("package"));
         QSignalSpy finished(&s.window, &MainWindow::exportFinished);
@@ -342,7 +381,7 @@ private slots:
         threshold->setValue(30.0);
         filter->click();
         QVERIFY(actor.qualityFilterEnabled());
-        const auto qualities = tetQualities(s.window.session().current()->mesh);
+        const auto qualities = tetQualities(s.window.session().current()->mesh());
         int below = 0;
         for (const TetQuality& q : qualities)
             below += q.minDihedral * 180.0 / M_PI < 30.0;
