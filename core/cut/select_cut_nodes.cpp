@@ -1,5 +1,7 @@
 #include "core/cut/select_cut_nodes.h"
 
+#include "core/mesh/union_find.h"
+
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -10,29 +12,17 @@ namespace {
 
 /// Groups of the nodes in `nodes` (4-bit mask) joined by the tet edges NOT in `cut` (6-bit).
 /// Returns a group id per local node (-1 for nodes outside the mask) and the group count.
+/// Groups are numbered in the order of their lowest local node.
 int groupNodes(std::uint8_t nodes, std::uint8_t cut, std::array<int, 4>& group) {
-    std::array<int, 4> parent{0, 1, 2, 3};
-    const auto find = [&](int x) {
-        while (parent[x] != x)
-            x = parent[x];
-        return x;
-    };
+    UnionFind joined(4);
     for (int e = 0; e < 6; ++e) {
         const int i = kTetEdges[e][0], j = kTetEdges[e][1];
         if ((nodes >> i & 1) && (nodes >> j & 1) && !(cut >> e & 1))
-            parent[find(i)] = find(j);
+            joined.unite(i, j);
     }
-    int count = 0;
-    std::array<int, 4> label{-1, -1, -1, -1};
-    for (int i = 0; i < 4; ++i) {
-        group[i] = -1;
-        if (!(nodes >> i & 1))
-            continue;
-        const int r = find(i);
-        if (label[r] < 0)
-            label[r] = count++;
-        group[i] = label[r];
-    }
+    std::vector<int> label;
+    const int count = joined.compact(label, [&](int i) { return (nodes >> i & 1) != 0; });
+    std::copy(label.begin(), label.end(), group.begin());
     return count;
 }
 

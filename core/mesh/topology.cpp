@@ -1,7 +1,8 @@
 #include "core/mesh/topology.h"
 
+#include "core/mesh/union_find.h"
+
 #include <algorithm>
-#include <numeric>
 #include <unordered_map>
 
 namespace resect {
@@ -20,14 +21,6 @@ struct TriHash {
 Tri sorted(Tri f) {
     std::sort(f.begin(), f.end());
     return f;
-}
-
-int findRoot(std::vector<int>& parent, int x) {
-    while (parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
 }
 
 } // namespace
@@ -114,27 +107,14 @@ bool isBoundaryNode(const TetMesh& mesh, int n) {
 }
 
 Components connectedComponents(const TetMesh& mesh) {
-    // Union-find over nodes: the nodes of a tet are joined; tets inherit their nodes' root.
-    std::vector<int> parent(mesh.nodeCount());
-    std::iota(parent.begin(), parent.end(), 0);
+    // Union-find over nodes: the nodes of a tet are joined; tets inherit their nodes' set.
+    // Components are numbered in the order of their lowest node.
+    UnionFind sets(mesh.nodeCount());
     for (const Tet& q : mesh.tets())
-        for (int i = 1; i < 4; ++i) {
-            const int a = findRoot(parent, q[0]);
-            const int b = findRoot(parent, q[i]);
-            if (a != b)
-                parent[std::max(a, b)] = std::min(a, b);
-        }
+        for (int i = 1; i < 4; ++i)
+            sets.unite(q[i], q[0]);
     Components c;
-    c.nodeComponent.assign(mesh.nodeCount(), -1);
-    std::vector<int> label(mesh.nodeCount(), -1);
-    for (int n = 0; n < mesh.nodeCount(); ++n) {
-        if (mesh.nodeTets(n).empty())
-            continue;
-        const int r = findRoot(parent, n);
-        if (label[r] < 0)
-            label[r] = c.count++;
-        c.nodeComponent[n] = label[r];
-    }
+    c.count = sets.compact(c.nodeComponent, [&](int n) { return !mesh.nodeTets(n).empty(); });
     c.tetComponent.resize(mesh.tetCount());
     for (int t = 0; t < mesh.tetCount(); ++t)
         c.tetComponent[t] = c.nodeComponent[mesh.tet(t)[0]];
