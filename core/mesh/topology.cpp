@@ -76,20 +76,6 @@ std::vector<BoundaryFace> boundaryFaces(const TetMesh& mesh) {
     return result;
 }
 
-bool isBoundaryEdge(const TetMesh& mesh, int a, int b) {
-    std::vector<int> around, scratch;
-    mesh.edgeTets(a, b, around);
-    for (int t : around)
-        for (int v : mesh.tet(t)) {
-            if (v == a || v == b)
-                continue;
-            mesh.faceTets(a, b, v, scratch);
-            if (scratch.size() == 1)
-                return true;
-        }
-    return false;
-}
-
 bool isBoundaryNode(const TetMesh& mesh, int n) {
     std::vector<int> scratch;
     for (int t : mesh.nodeTets(n)) {
@@ -102,6 +88,30 @@ bool isBoundaryNode(const TetMesh& mesh, int n) {
             if (scratch.size() == 1)
                 return true;
         }
+    }
+    return false;
+}
+
+bool isBoundaryEdge(const TetMesh& mesh, int a, int b) {
+    // Every face (a, b, v) lies in tets around the edge; it belongs to one tet only when v is
+    // the third node of exactly one of them.
+    std::vector<int> third;
+    for (int t : mesh.nodeTets(a)) {
+        const Tet& q = mesh.tet(t);
+        if (std::find(q.begin(), q.end(), b) == q.end())
+            continue;
+        for (int v : q)
+            if (v != a && v != b)
+                third.push_back(v);
+    }
+    std::sort(third.begin(), third.end());
+    for (std::size_t i = 0; i < third.size();) {
+        std::size_t j = i + 1;
+        while (j < third.size() && third[j] == third[i])
+            ++j;
+        if (j - i == 1)
+            return true;
+        i = j;
     }
     return false;
 }
