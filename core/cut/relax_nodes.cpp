@@ -17,8 +17,8 @@ namespace {
 /// Groups of coincident copies: a node and the copies separation made of it. Every node of
 /// a group moves with its leader (the group's first node).
 struct CopyGroups {
-    std::unordered_map<int, int> leader;                  ///< node -> first node of its group
-    std::unordered_map<int, std::vector<int>> groupOf;  ///< leader -> its group
+    std::unordered_map<int, int> leader;               ///< node -> first node of its group
+    std::unordered_map<int, std::vector<int>> groupOf; ///< leader -> its group
 
     int lead(int n) const {
         const auto it = leader.find(n);
@@ -46,8 +46,8 @@ CopyGroups copyGroups(const CutChanges& changes) {
 }
 
 /// S: the `rings`-ring neighbourhood of the nodes on the cut, as sorted group leaders.
-std::vector<int> neighbourhoodOfCut(const TetMesh& mesh, const CopyGroups& groups, const CutChanges& changes,
-                                    int rings) {
+std::vector<int> neighbourhoodOfCut(const TetMesh& mesh, const CopyGroups& groups,
+                                    const CutChanges& changes, int rings) {
     std::unordered_set<int> region;
     std::vector<int> frontier;
     for (int n : changes.cutSurfaceNodes)
@@ -71,8 +71,8 @@ std::vector<int> neighbourhoodOfCut(const TetMesh& mesh, const CopyGroups& group
 /// within the sweep, interior nodes freely; `fixed` nodes, and nodes on the boundary that
 /// are not on this cut (the original surface or an earlier cut), stay.
 std::vector<int> movableNodes(const TetMesh& mesh, const std::vector<int>& region,
-                              const std::unordered_set<int>& onCut, const std::unordered_set<int>& fixed,
-                              RelaxResult& result) {
+                              const std::unordered_set<int>& onCut,
+                              const std::unordered_set<int>& fixed, RelaxResult& result) {
     std::vector<int> movable;
     for (int n : region) {
         const bool cutNode = onCut.count(n) > 0;
@@ -111,7 +111,8 @@ struct Relaxing {
 };
 
 /// The movable nodes that have neighbours, in order.
-std::vector<Relaxing> gatherRelaxing(const TetMesh& mesh, const CopyGroups& groups, const std::vector<int>& movable) {
+std::vector<Relaxing> gatherRelaxing(const TetMesh& mesh, const CopyGroups& groups,
+                                     const std::vector<int>& movable) {
     std::vector<Relaxing> relaxing;
     relaxing.reserve(movable.size());
     for (int n : movable) {
@@ -121,7 +122,8 @@ std::vector<Relaxing> gatherRelaxing(const TetMesh& mesh, const CopyGroups& grou
                 if (groups.lead(u) != n)
                     r.neighbours.push_back(u);
         std::sort(r.neighbours.begin(), r.neighbours.end());
-        r.neighbours.erase(std::unique(r.neighbours.begin(), r.neighbours.end()), r.neighbours.end());
+        r.neighbours.erase(std::unique(r.neighbours.begin(), r.neighbours.end()),
+                           r.neighbours.end());
         if (!r.neighbours.empty())
             relaxing.push_back(std::move(r));
     }
@@ -132,7 +134,8 @@ std::vector<Relaxing> gatherRelaxing(const TetMesh& mesh, const CopyGroups& grou
 /// F the weighted spring and Lennard-Jones forces in units of the rest length (linear
 /// springs; a Lennard-Jones potential whose minimum is at the rest length, sigma = rest /
 /// 2^(1/6)).
-Vec3 dampedStepTarget(const TetMesh& mesh, const Relaxing& item, double rest, const RelaxOptions& options) {
+Vec3 dampedStepTarget(const TetMesh& mesh, const Relaxing& item, double rest,
+                      const RelaxOptions& options) {
     const Vec3 x = mesh.pos(item.node);
     Vec3 force = Vec3::Zero();
     for (int u : item.neighbours) {
@@ -143,7 +146,7 @@ Vec3 dampedStepTarget(const TetMesh& mesh, const Relaxing& item, double rest, co
         const Vec3 dir = d / (r * rest);
         const double spring = r - 1.0;
         const double r2 = r * r;
-        const double s6 = 0.5 / (r2 * r2 * r2);  // (sigma / r)^6 with 2^(1/6) sigma = 1
+        const double s6 = 0.5 / (r2 * r2 * r2); // (sigma / r)^6 with 2^(1/6) sigma = 1
         const double lj = -24.0 * (2.0 * s6 * s6 - s6) / r;
         force += (options.wSpring * spring + options.wParticle * lj / 12.0) * dir;
     }
@@ -153,13 +156,15 @@ Vec3 dampedStepTarget(const TetMesh& mesh, const Relaxing& item, double rest, co
 
 /// The smallest radius ratio of the tets at the nodes of `group`; each tet's ratio is
 /// appended to `ratios` (cleared first).
-double minQualityAround(const TetMesh& mesh, const std::vector<int>& group, std::vector<std::pair<int, double>>* ratios) {
+double minQualityAround(const TetMesh& mesh, const std::vector<int>& group,
+                        std::vector<std::pair<int, double>>* ratios) {
     double q = std::numeric_limits<double>::infinity();
     ratios->clear();
     for (int v : group)
         for (int t : mesh.nodeTets(v)) {
             const Tet& k = mesh.tet(t);
-            const double r = radiusRatio(mesh.ref(k[0]), mesh.ref(k[1]), mesh.ref(k[2]), mesh.ref(k[3]));
+            const double r =
+                radiusRatio(mesh.ref(k[0]), mesh.ref(k[1]), mesh.ref(k[2]), mesh.ref(k[3]));
             ratios->emplace_back(t, r);
             q = std::min(q, r);
         }
@@ -180,7 +185,8 @@ public:
                 auto [it, inserted] = m_ratio.try_emplace(t, 0.0);
                 if (inserted) {
                     const Tet& k = m_mesh.tet(t);
-                    it->second = radiusRatio(m_mesh.ref(k[0]), m_mesh.ref(k[1]), m_mesh.ref(k[2]), m_mesh.ref(k[3]));
+                    it->second = radiusRatio(m_mesh.ref(k[0]), m_mesh.ref(k[1]), m_mesh.ref(k[2]),
+                                             m_mesh.ref(k[3]));
                 }
                 q = std::min(q, it->second);
             }
@@ -237,7 +243,7 @@ void relaxSweeps(TetMesh& mesh, const SweepSurface& sweep, const std::vector<Rel
             const Vec3 x = mesh.pos(item.node);
             Vec3 target = dampedStepTarget(mesh, item, rest, options);
             if (onCut.count(item.node))
-                target = sweep.closestPoint(target).point;  // stay within the sweep
+                target = sweep.closestPoint(target).point; // stay within the sweep
             if (!target.allFinite() || target == x)
                 continue;
             const Vec3 targetRef = referenceFromDeformed(mesh, item.group, target);
@@ -245,13 +251,15 @@ void relaxSweeps(TetMesh& mesh, const SweepSurface& sweep, const std::vector<Rel
                 continue;
             if (tryMove(mesh, item, target, targetRef, quality, scratch)) {
                 ++result.acceptedMoves;
-                result.movedNodes.insert(result.movedNodes.end(), item.group.begin(), item.group.end());
+                result.movedNodes.insert(result.movedNodes.end(), item.group.begin(),
+                                         item.group.end());
             } else {
                 ++result.rejectedMoves;
             }
         }
     std::sort(result.movedNodes.begin(), result.movedNodes.end());
-    result.movedNodes.erase(std::unique(result.movedNodes.begin(), result.movedNodes.end()), result.movedNodes.end());
+    result.movedNodes.erase(std::unique(result.movedNodes.begin(), result.movedNodes.end()),
+                            result.movedNodes.end());
 }
 
 } // namespace
@@ -264,7 +272,8 @@ RelaxResult relaxNodes(TetMesh& mesh, const SweepSurface& sweep, const CutChange
     if (options.steps <= 0 || !(options.damping > 0))
         return result;
     const CopyGroups groups = copyGroups(changes);
-    const std::unordered_set<int> onCut(changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end());
+    const std::unordered_set<int> onCut(changes.cutSurfaceNodes.begin(),
+                                        changes.cutSurfaceNodes.end());
     std::unordered_set<int> fixed;
     for (int n : fixedNodes)
         fixed.insert(groups.lead(n));

@@ -67,9 +67,9 @@ int crossedIndex(const IntersectedEdges& crossed, int a, int b) {
 
 /// The tets the sweep touches: on a crossed edge or at a node on the sweep.
 struct TouchedTets {
-    std::vector<int> tets;                  ///< sorted, without duplicates
-    std::vector<std::uint8_t> crossedMask;  ///< per tet: bit e set if local edge e is crossed
-    std::vector<char> partial;              ///< per tet: partially cut (markPartialTets)
+    std::vector<int> tets;                 ///< sorted, without duplicates
+    std::vector<std::uint8_t> crossedMask; ///< per tet: bit e set if local edge e is crossed
+    std::vector<char> partial;             ///< per tet: partially cut (markPartialTets)
 
     /// True if tet t is touched and partially cut.
     bool isPartial(int t) const {
@@ -189,8 +189,8 @@ void listCutNodes(const CutNodeDistances& cutDistance, CutSelection& sel) {
 /// Cut edges: the crossed edges with no cut node at either end (section 4.3). Rule
 /// "minEdgeFraction": a crossing closer than that fraction of the edge to an end node is
 /// moved to that fraction, so that no split creates a zero-volume tet.
-void listCutEdges(const TetMesh& mesh, const IntersectedEdges& crossed, const CutNodeDistances& cutDistance,
-                  double minEdgeFraction, CutSelection& sel) {
+void listCutEdges(const TetMesh& mesh, const IntersectedEdges& crossed,
+                  const CutNodeDistances& cutDistance, double minEdgeFraction, CutSelection& sel) {
     const double lo = minEdgeFraction, hi = 1.0 - minEdgeFraction;
     for (const EdgeCrossing& e : crossed.edges) {
         if (cutDistance.count(e.a) || cutDistance.count(e.b))
@@ -206,7 +206,8 @@ void listCutEdges(const TetMesh& mesh, const IntersectedEdges& crossed, const Cu
 }
 
 /// The tets to classify: every touched tet and every tet at a cut node, sorted.
-std::vector<int> affectedTets(const TetMesh& mesh, const TouchedTets& touched, const std::vector<int>& cutNodes) {
+std::vector<int> affectedTets(const TetMesh& mesh, const TouchedTets& touched,
+                              const std::vector<int>& cutNodes) {
     std::vector<int> affected = touched.tets;
     for (int n : cutNodes)
         affected.insert(affected.end(), mesh.nodeTets(n).begin(), mesh.nodeTets(n).end());
@@ -241,12 +242,13 @@ void tetSides(const TetMesh& mesh, const SweepSurface& sweep, const IntersectedE
     const std::uint8_t rest = static_cast<std::uint8_t>(~tc.nodeCode & 0xF);
     std::array<int, 4> group;
     groupNodes(rest, tc.edgeCode, group);
-    int side0 = 0;  // side of group 0
+    int side0 = 0; // side of group 0
     for (int e = 0; e < 6 && side0 == 0; ++e) {
         if (!(tc.edgeCode >> e & 1))
             continue;
         const int i = kTetEdges[e][0];
-        const EdgeCrossing& c = sel.cutEdges[sel.cutEdgeIndex.at(edgeKey(q[i], q[kTetEdges[e][1]]))];
+        const EdgeCrossing& c =
+            sel.cutEdges[sel.cutEdgeIndex.at(edgeKey(q[i], q[kTetEdges[e][1]]))];
         const int si = c.a == q[i] ? c.hit.sideP : -c.hit.sideP;
         side0 = group[i] == 0 ? si : -si;
     }
@@ -267,8 +269,8 @@ void tetSides(const TetMesh& mesh, const SweepSurface& sweep, const IntersectedE
 /// Codes, scheme (Figure 4) and node sides of tet t; false if the tet is touched only at a
 /// node that could not be a cut node (nothing to do).
 bool classifyTet(const TetMesh& mesh, const SweepSurface& sweep, const IntersectedEdges& crossed,
-                 const TouchedTets& touched, const CutNodeDistances& cutDistance, const CutSelection& sel,
-                 int t, TetCut& tc) {
+                 const TouchedTets& touched, const CutNodeDistances& cutDistance,
+                 const CutSelection& sel, int t, TetCut& tc) {
     const Tet& q = mesh.tet(t);
     tc = TetCut{};
     tc.tet = t;

@@ -54,8 +54,7 @@ public:
     /// Dense set labels 0 .. k-1 for the elements i with keep(i), numbered in the order of
     /// each set's first kept element (so independent of which element is the root); -1 for
     /// the others. `label` is resized to size(); returns k.
-    template <class Keep>
-    int compact(std::vector<int>& label, Keep keep) {
+    template <class Keep> int compact(std::vector<int>& label, Keep keep) {
         label.assign(m_parent.size(), -1);
         std::vector<int> ofRoot(m_parent.size(), -1);
         int count = 0;

@@ -59,7 +59,8 @@ inline IntersectedEdges crossingsOfZ0(const TetMesh& mesh, const SweepSurface& s
 /// The unit tet (0,0,0), (1,0,0), (0,1,0), (0,0,1): local edge e of kTetEdges joins the
 /// same global nodes.
 inline TetMesh unitTet() {
-    return TetMesh::fromArrays({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}, {{0, 1, 2, 3}});
+    return TetMesh::fromArrays({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)},
+                               {{0, 1, 2, 3}});
 }
 
 } // namespace resect::testing

@@ -21,8 +21,8 @@ namespace {
 
 /// Planar sweep c + s u + r w for s in [s0, s1] on curve 0 (r = r0) and [s2, s3] on curve 1
 /// (r = r1), n segments per curve: a trapezoid in the plane, or a square.
-SweepSurface quadSweep(const Vec3& c, const Vec3& u, const Vec3& w, double s0, double s1, double r0, double r1,
-                       double s2, double s3) {
+SweepSurface quadSweep(const Vec3& c, const Vec3& u, const Vec3& w, double s0, double s1, double r0,
+                       double r1, double s2, double s3) {
     std::vector<Vec3> a, b;
     for (int j = 0; j <= 4; ++j) {
         a.push_back(c + r0 * w + (s0 + (s1 - s0) * j / 4) * u);
@@ -45,36 +45,61 @@ struct SchemeCase {
     Vec3 n;
     double c;
     SweepSurface sweep;
-    std::vector<int> partialEdges;  ///< empty: a complete cut, crossed edges from the plane
+    std::vector<int> partialEdges; ///< empty: a complete cut, crossed edges from the plane
 };
 
 SchemeCase schemeCase(Scheme s) {
     switch (s) {
-    case Scheme::A: return {Vec3(1, 1, 1), 0.5, squareSweep(Vec3(0.5, 0, 0), Vec3(1, -1, 0), Vec3(1, 1, -2)), {}};
-    case Scheme::B: return {Vec3(0, 1, 1), 0.5, squareSweep(Vec3(0, 0.25, 0.25), Vec3(1, 0, 0), Vec3(0, 1, -1)), {}};
-    case Scheme::X: return {Vec3(1, -1, -1), 0, squareSweep(Vec3::Zero(), Vec3(1, 1, 0), Vec3(1, 0, 1)), {}};
-    case Scheme::Y: return {Vec3(0, 1, -1), 0, squareSweep(Vec3::Zero(), Vec3(1, 0, 0), Vec3(0, 1, 1)), {}};
-    case Scheme::Z: return {Vec3(0, 0, 1), 0, squareSweep(Vec3::Zero(), Vec3(1, 0, 0), Vec3(0, 1, 0)), {}};
-    case Scheme::Touch: return {Vec3(1, 1, 1), 0, squareSweep(Vec3::Zero(), Vec3(1, -1, 0), Vec3(1, 1, -2)), {}};
+    case Scheme::A:
+        return {
+            Vec3(1, 1, 1), 0.5, squareSweep(Vec3(0.5, 0, 0), Vec3(1, -1, 0), Vec3(1, 1, -2)), {}};
+    case Scheme::B:
+        return {Vec3(0, 1, 1),
+                0.5,
+                squareSweep(Vec3(0, 0.25, 0.25), Vec3(1, 0, 0), Vec3(0, 1, -1)),
+                {}};
+    case Scheme::X:
+        return {Vec3(1, -1, -1), 0, squareSweep(Vec3::Zero(), Vec3(1, 1, 0), Vec3(1, 0, 1)), {}};
+    case Scheme::Y:
+        return {Vec3(0, 1, -1), 0, squareSweep(Vec3::Zero(), Vec3(1, 0, 0), Vec3(0, 1, 1)), {}};
+    case Scheme::Z:
+        return {Vec3(0, 0, 1), 0, squareSweep(Vec3::Zero(), Vec3(1, 0, 0), Vec3(0, 1, 0)), {}};
+    case Scheme::Touch:
+        return {Vec3(1, 1, 1), 0, squareSweep(Vec3::Zero(), Vec3(1, -1, 0), Vec3(1, 1, -2)), {}};
     // x = 1/2 for y, z <= 0.2: crosses edge 0-1 only (edges 1-2 and 1-3 meet the plane
     // beyond the sweep's border).
     case Scheme::C:
-        return {Vec3(1, 0, 0), 0.5, quadSweep(Vec3(0.5, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), -0.5, 0.2, -0.5, 0.2, -0.5, 0.2), {0}};
+        return {Vec3(1, 0, 0),
+                0.5,
+                quadSweep(Vec3(0.5, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), -0.5, 0.2, -0.5, 0.2, -0.5,
+                          0.2),
+                {0}};
     // x = 1/2 for y <= 0.6, z <= 0.2: edges 0-1 and 1-2.
     case Scheme::D:
-        return {Vec3(1, 0, 0), 0.5, quadSweep(Vec3(0.5, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), -0.5, 0.6, -0.5, 0.2, -0.5, 0.6),
+        return {Vec3(1, 0, 0),
+                0.5,
+                quadSweep(Vec3(0.5, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), -0.5, 0.6, -0.5, 0.2, -0.5,
+                          0.6),
                 {0, 3}};
     // x + y = 1/2 over a trapezoid: edges 0-1, 0-2 and 1-3 of the four a complete cut would
     // cross (edge 2-3 meets the plane beyond the sweep).
     case Scheme::E:
-        return {Vec3(1, 1, 0), 0.5, quadSweep(Vec3(0.25, 0.25, 0), Vec3(1, -1, 0), Vec3(0, 0, 1), -0.6, 0.4, -0.5, 0.6, 0.0, 0.4),
+        return {Vec3(1, 1, 0),
+                0.5,
+                quadSweep(Vec3(0.25, 0.25, 0), Vec3(1, -1, 0), Vec3(0, 0, 1), -0.6, 0.4, -0.5, 0.6,
+                          0.0, 0.4),
                 {0, 1, 4}};
-    default: qFatal("no such case");
+    default:
+        qFatal("no such case");
     }
 }
 
-double planeValue(const SchemeCase& k, const Vec3& x) { return k.n.dot(x) - k.c; }
-int sign(double v) { return (v > 0) - (v < 0); }
+double planeValue(const SchemeCase& k, const Vec3& x) {
+    return k.n.dot(x) - k.c;
+}
+int sign(double v) {
+    return (v > 0) - (v < 0);
+}
 
 /// The selection step 3 would make for the case: nodes on the plane are cut nodes (complete
 /// cuts); crossed edges with t = f(a) / (f(a) - f(b)) from the plane values f; sides sign(f).
@@ -97,8 +122,9 @@ CutSelection literalSelection(const TetMesh& mesh, const SchemeCase& k, Scheme s
     for (int e = 0; e < 6; ++e) {
         const int a = q[kTetEdges[e][0]], b = q[kTetEdges[e][1]];
         const double fa = planeValue(k, mesh.pos(a)), fb = planeValue(k, mesh.pos(b));
-        const bool crossed = tc.partial ? std::count(k.partialEdges.begin(), k.partialEdges.end(), e) > 0
-                                        : fa * fb < 0;
+        const bool crossed = tc.partial
+                                 ? std::count(k.partialEdges.begin(), k.partialEdges.end(), e) > 0
+                                 : fa * fb < 0;
         if (!crossed)
             continue;
         EdgeCrossing c;
@@ -137,16 +163,17 @@ private slots:
     void eachScheme_data() {
         QTest::addColumn<Scheme>("scheme");
         QTest::addColumn<Faces>("faces");
-        QTest::addColumn<int>("standardTets");  ///< sub-tets with standard faces; -1: not checked
-        const std::pair<const char*, Faces> faces[] = {
-            {"standard", Faces::Standard}, {"enhanced", Faces::Enhanced}, {"plain symmetric", Faces::PlainSymmetric}};
+        QTest::addColumn<int>("standardTets"); ///< sub-tets with standard faces; -1: not checked
+        const std::pair<const char*, Faces> faces[] = {{"standard", Faces::Standard},
+                                                       {"enhanced", Faces::Enhanced},
+                                                       {"plain symmetric", Faces::PlainSymmetric}};
         // Standard counts: A = corner tet + prism (3); B = two prisms; X = tet + pyramid (2);
         // Y = two tets; Z and Touch only detached; C = two tets from the split point; D and E
         // depend on the interior point placed on the sweep.
         const std::tuple<const char*, Scheme, int> schemes[] = {
-            {"A", Scheme::A, 4}, {"B", Scheme::B, 6}, {"C", Scheme::C, 2}, {"D", Scheme::D, -1},
-            {"E", Scheme::E, -1}, {"X", Scheme::X, 3}, {"Y", Scheme::Y, 2}, {"Z", Scheme::Z, 1},
-            {"Touch", Scheme::Touch, 1}};
+            {"A", Scheme::A, 4},  {"B", Scheme::B, 6},  {"C", Scheme::C, 2},
+            {"D", Scheme::D, -1}, {"E", Scheme::E, -1}, {"X", Scheme::X, 3},
+            {"Y", Scheme::Y, 2},  {"Z", Scheme::Z, 1},  {"Touch", Scheme::Touch, 1}};
         for (const auto& [sname, scheme, count] : schemes)
             for (const auto& [fname, f] : faces)
                 QTest::addRow("%s, %s", sname, fname) << scheme << f << count;
@@ -177,11 +204,13 @@ private slots:
         double volume = 0;
         for (int t = 0; t < mesh.tetCount(); ++t) {
             const Tet& q = mesh.tet(t);
-            QVERIFY2(orient3d(mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3])) > 0, qPrintable(QString::number(t)));
+            QVERIFY2(orient3d(mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3])) > 0,
+                     qPrintable(QString::number(t)));
             QVERIFY(orient3d(mesh.pos(q[0]), mesh.pos(q[1]), mesh.pos(q[2]), mesh.pos(q[3])) > 0);
             volume += mesh.referenceVolume(t);
         }
-        QVERIFY2(std::abs(volume - 1.0 / 6.0) <= 1e-15, qPrintable(QString::number(volume, 'g', 17)));
+        QVERIFY2(std::abs(volume - 1.0 / 6.0) <= 1e-15,
+                 qPrintable(QString::number(volume, 'g', 17)));
         if (faces == Faces::Standard && standardTets > 0)
             QCOMPARE(mesh.tetCount(), standardTets);
         // Every tet has a side; complete cuts: each tet on one side of the plane (the plane
@@ -196,7 +225,10 @@ private slots:
             QVERIFY(side == 1 || side == -1);
             for (int v : mesh.tet(t))
                 QVERIFY2(side * planeValue(k, mesh.ref(v)) >= 0,
-                         qPrintable(QString("tet %1 (side %2) straddles the plane at node %3").arg(t).arg(side).arg(v)));
+                         qPrintable(QString("tet %1 (side %2) straddles the plane at node %3")
+                                        .arg(t)
+                                        .arg(side)
+                                        .arg(v)));
         }
         // Partial cuts: no new edge crosses the sweep away from the points on it.
         if (tc.partial) {
@@ -213,7 +245,8 @@ private slots:
                     if (onCut[a] || onCut[b])
                         continue;
                     intersectSegment(k.sweep, mesh.pos(a), mesh.pos(b), query, scratch);
-                    QVERIFY2(query.hits.size() % 2 == 0, qPrintable(QString("edge %1-%2").arg(a).arg(b)));
+                    QVERIFY2(query.hits.size() % 2 == 0,
+                             qPrintable(QString("edge %1-%2").arg(a).arg(b)));
                 }
         }
         // What was changed is recorded.
@@ -225,12 +258,13 @@ private slots:
             QCOMPARE(parent, 0);
         if (detachedOnly) {
             QCOMPARE(mesh.tet(0), (Tet{0, 1, 2, 3}));
-            QCOMPARE(int(d.tetSide.at(0)), 1);  // the side of the nodes off the plane
+            QCOMPARE(int(d.tetSide.at(0)), 1); // the side of the nodes off the plane
         }
         if (faces == Faces::Standard)
             QCOMPARE(d.faceNodes, 0);
-        if (faces == Faces::PlainSymmetric && (scheme == Scheme::A || scheme == Scheme::B || scheme == Scheme::X))
-            QVERIFY(d.faceNodes > 0);  // every face prism of a complete cut gets its node
+        if (faces == Faces::PlainSymmetric &&
+            (scheme == Scheme::A || scheme == Scheme::B || scheme == Scheme::X))
+            QVERIFY(d.faceNodes > 0); // every face prism of a complete cut gets its node
     }
 
     void splitPointsFollowEq1InTheDeformedConfiguration() {

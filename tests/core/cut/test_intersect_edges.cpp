@@ -46,12 +46,13 @@ private slots:
     void crossedEdges_data() {
         QTest::addColumn<int>("plane");
         QTest::addColumn<Edges>("crossed");
-        QTest::addColumn<std::vector<double>>("t");  ///< crossing parameter of each crossed edge
+        QTest::addColumn<std::vector<double>>("t"); ///< crossing parameter of each crossed edge
         // Unit tet.
         QTest::newRow("x + y + z = 1/2: the three edges at node 0")
             << 0 << Edges{{0, 1}, {0, 2}, {0, 3}} << std::vector<double>{0.5, 0.5, 0.5};
         QTest::newRow("y + z = 1/2: four edges, two and two")
-            << 1 << Edges{{0, 2}, {0, 3}, {1, 2}, {1, 3}} << std::vector<double>{0.5, 0.5, 0.5, 0.5};
+            << 1 << Edges{{0, 2}, {0, 3}, {1, 2}, {1, 3}}
+            << std::vector<double>{0.5, 0.5, 0.5, 0.5};
         QTest::newRow("x = 1/4: the three edges at node 1, t from the lower index")
             << 2 << Edges{{0, 1}, {1, 2}, {1, 3}} << std::vector<double>{0.25, 0.75, 0.75};
         QTest::newRow("z = 2: none") << 3 << Edges{} << std::vector<double>{};
@@ -63,25 +64,37 @@ private slots:
         const TetMesh mesh = unitTet();
         SweepSurface sweep;
         switch (plane) {
-        case 0: sweep = squareSweep(Vec3(0.5, 0, 0), Vec3(1, -1, 0), Vec3(1, 1, -2), 3); break;
-        case 1: sweep = squareSweep(Vec3(0, 0.25, 0.25), Vec3(1, 0, 0), Vec3(0, 1, -1), 3); break;
-        case 2: sweep = squareSweep(Vec3(0.25, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 3); break;
-        case 3: sweep = squareSweep(Vec3(0, 0, 2), Vec3(1, 0, 0), Vec3(0, 1, 0), 3); break;
+        case 0:
+            sweep = squareSweep(Vec3(0.5, 0, 0), Vec3(1, -1, 0), Vec3(1, 1, -2), 3);
+            break;
+        case 1:
+            sweep = squareSweep(Vec3(0, 0.25, 0.25), Vec3(1, 0, 0), Vec3(0, 1, -1), 3);
+            break;
+        case 2:
+            sweep = squareSweep(Vec3(0.25, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 3);
+            break;
+        case 3:
+            sweep = squareSweep(Vec3(0, 0, 2), Vec3(1, 0, 0), Vec3(0, 1, 0), 3);
+            break;
         }
         const IntersectedEdges x = intersectEdges(mesh, TetGrid{}, sweep);
         QCOMPARE(edgesOf(x), crossed);
         QCOMPARE(x.discardedEdges, 0);
         QCOMPARE(x.multiplyCrossedEdges, 0);
         QCOMPARE(x.onSweepNodes, std::vector<int>{});
-        QCOMPARE(x.candidateTets, std::vector<int>{0});  // no grid: every tet
+        QCOMPARE(x.candidateTets, std::vector<int>{0}); // no grid: every tet
         for (std::size_t k = 0; k < x.edges.size(); ++k) {
             const EdgeCrossing& c = x.edges[k];
             QVERIFY(c.a < c.b);
             QCOMPARE(x.index.at(edgeKey(c.a, c.b)), int(k));
             // Parameter from a, the point at it, on the sweep; a on side sideP, b opposite.
-            const std::size_t e = std::find(crossed.begin(), crossed.end(), std::array<int, 2>{c.a, c.b}) - crossed.begin();
-            QVERIFY2(std::abs(c.hit.t - t[e]) <= 1e-15, qPrintable(QString::number(c.hit.t, 'g', 17)));
-            QVERIFY((c.hit.point - (mesh.pos(c.a) + c.hit.t * (mesh.pos(c.b) - mesh.pos(c.a)))).norm() <= 1e-15);
+            const std::size_t e =
+                std::find(crossed.begin(), crossed.end(), std::array<int, 2>{c.a, c.b}) -
+                crossed.begin();
+            QVERIFY2(std::abs(c.hit.t - t[e]) <= 1e-15,
+                     qPrintable(QString::number(c.hit.t, 'g', 17)));
+            QVERIFY((c.hit.point - (mesh.pos(c.a) + c.hit.t * (mesh.pos(c.b) - mesh.pos(c.a))))
+                        .norm() <= 1e-15);
             QVERIFY(sweep.closestPoint(c.hit.point).distance <= 1e-15);
             QCOMPARE(c.hit.sideP, sweep.sideOf(mesh.pos(c.a)));
             QCOMPARE(sweep.sideOf(mesh.pos(c.b)), -c.hit.sideP);
@@ -92,9 +105,9 @@ private slots:
     void edgeCrossedTwiceIsDiscarded() {
         // A V-shaped stroke (three tool curves) crosses edge 0-1 (along y at z = 1/2) twice,
         // at y = 0.4 and y = 0.6: its ends are on the same side, the crossings are discarded.
-        const TetMesh mesh = TetMesh::fromArrays({Vec3(0.5, 0.25, 0.5), Vec3(0.5, 0.75, 0.5), Vec3(1, 0.5, 0),
-                                                  Vec3(0, 0.5, 0)},
-                                                 {{0, 1, 2, 3}});
+        const TetMesh mesh = TetMesh::fromArrays(
+            {Vec3(0.5, 0.25, 0.5), Vec3(0.5, 0.75, 0.5), Vec3(1, 0.5, 0), Vec3(0, 0.5, 0)},
+            {{0, 1, 2, 3}});
         QVERIFY(mesh.referenceVolume(0) > 0);
         SweepSurface sweep;
         QVERIFY(SweepSurface::fromCurves({{Vec3(-1, 0.3, 1.5), Vec3(2, 0.3, 1.5)},
@@ -113,9 +126,9 @@ private slots:
         // A W-shaped stroke (four tool curves) crosses edge 0-1, from y = 0 to y = 1 at
         // z = 1/2, at y = 1/4, 1/2 and 3/4: an odd count, so the ends are on opposite sides
         // and the edge is split once, at the middle crossing.
-        const TetMesh mesh = TetMesh::fromArrays({Vec3(0.5, 0, 0.5), Vec3(0.5, 1, 0.5), Vec3(1, 0.5, -1),
-                                                  Vec3(0, 0.5, -1)},
-                                                 {{0, 1, 2, 3}});
+        const TetMesh mesh = TetMesh::fromArrays(
+            {Vec3(0.5, 0, 0.5), Vec3(0.5, 1, 0.5), Vec3(1, 0.5, -1), Vec3(0, 0.5, -1)},
+            {{0, 1, 2, 3}});
         QVERIFY(mesh.referenceVolume(0) > 0);
         SweepSurface sweep;
         QVERIFY(SweepSurface::fromCurves({{Vec3(-1, 0.125, 1.5), Vec3(2, 0.125, 1.5)},
@@ -141,9 +154,10 @@ private slots:
         QTest::newRow("z = 0 holds face (0, 1, 2)") << 0 << std::vector<int>{0, 1, 2} << Edges{};
         QTest::newRow("x + y + z = 0 touches node 0") << 1 << std::vector<int>{0} << Edges{};
         QTest::newRow("z = 1 touches node 3") << 2 << std::vector<int>{3} << Edges{};
-        QTest::newRow("x = y holds nodes 0 and 3, crosses edge 1-2") << 3 << std::vector<int>{0, 3} << Edges{{1, 2}};
-        QTest::newRow("x - y + z/2 = 0 holds node 0, crosses 1-2 and 2-3") << 4 << std::vector<int>{0}
-                                                                          << Edges{{1, 2}, {2, 3}};
+        QTest::newRow("x = y holds nodes 0 and 3, crosses edge 1-2")
+            << 3 << std::vector<int>{0, 3} << Edges{{1, 2}};
+        QTest::newRow("x - y + z/2 = 0 holds node 0, crosses 1-2 and 2-3")
+            << 4 << std::vector<int>{0} << Edges{{1, 2}, {2, 3}};
     }
     void nodesExactlyOnTheSweep() {
         QFETCH(int, plane);
@@ -154,11 +168,21 @@ private slots:
         const TetMesh mesh = unitTet();
         SweepSurface sweep;
         switch (plane) {
-        case 0: sweep = squareSweep(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), 3); break;
-        case 1: sweep = squareSweep(Vec3(0, 0, 0), Vec3(1, -1, 0), Vec3(1, 1, -2), 3); break;
-        case 2: sweep = squareSweep(Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(0, 1, 0), 3); break;
-        case 3: sweep = squareSweep(Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 0, 1), 3); break;
-        case 4: sweep = squareSweep(Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(-1, 1, 4), 3); break;
+        case 0:
+            sweep = squareSweep(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), 3);
+            break;
+        case 1:
+            sweep = squareSweep(Vec3(0, 0, 0), Vec3(1, -1, 0), Vec3(1, 1, -2), 3);
+            break;
+        case 2:
+            sweep = squareSweep(Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(0, 1, 0), 3);
+            break;
+        case 3:
+            sweep = squareSweep(Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 0, 1), 3);
+            break;
+        case 4:
+            sweep = squareSweep(Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(-1, 1, 4), 3);
+            break;
         }
         const IntersectedEdges x = intersectEdges(mesh, TetGrid{}, sweep);
         QCOMPARE(x.onSweepNodes, onSweep);
@@ -178,7 +202,8 @@ private slots:
         // sorted subset of the tets holding every crossed edge, and the same crossings as
         // examining every tet.
         const TetMesh mesh = makeBoxTetMesh(Vec3::Zero(), Vec3(1, 1, 1) * scale, 8, 8, 8);
-        const SweepSurface sweep = squareSweep(Vec3(0.2, 0.2, 0.3) * scale, Vec3(1, 0.1, 0), Vec3(0.1, 1, 0.2), 0.15 * scale);
+        const SweepSurface sweep = squareSweep(Vec3(0.2, 0.2, 0.3) * scale, Vec3(1, 0.1, 0),
+                                               Vec3(0.1, 1, 0.2), 0.15 * scale);
         TetGrid grid;
         grid.build(mesh);
         const IntersectedEdges withGrid = intersectEdges(mesh, grid, sweep);
@@ -191,11 +216,13 @@ private slots:
                 withGrid.candidateTets.end());
         QVERIFY(!all.edges.empty());
         QCOMPARE(edgesOf(withGrid), edgesOf(all));
-        const std::set<int> candidates(withGrid.candidateTets.begin(), withGrid.candidateTets.end());
+        const std::set<int> candidates(withGrid.candidateTets.begin(),
+                                       withGrid.candidateTets.end());
         std::vector<int> around;
         for (const EdgeCrossing& c : all.edges) {
             mesh.edgeTets(c.a, c.b, around);
-            QVERIFY(std::any_of(around.begin(), around.end(), [&](int t) { return candidates.count(t) > 0; }));
+            QVERIFY(std::any_of(around.begin(), around.end(),
+                                [&](int t) { return candidates.count(t) > 0; }));
             const EdgeCrossing& g = withGrid.edges[withGrid.index.at(edgeKey(c.a, c.b))];
             QVERIFY(g.hit.t == c.hit.t);
         }

@@ -36,12 +36,12 @@ struct Fixture {
 
 /// The result in terms of the fixture's own numbering, comparable across relabellings.
 struct Outcome {
-    std::vector<int> cutNodes;                  ///< sorted
-    std::vector<double> cutNodeDistance;        ///< in the order of cutNodes
-    std::map<std::array<int, 2>, double> cutEdges;  ///< (a, b), a < b -> crossing parameter from a
-    std::map<int, Scheme> scheme;               ///< tet -> scheme
-    std::map<int, bool> partial;                ///< tet -> partially cut
-    CutSelection raw;                           ///< the selection itself (identity numbering only)
+    std::vector<int> cutNodes;                     ///< sorted
+    std::vector<double> cutNodeDistance;           ///< in the order of cutNodes
+    std::map<std::array<int, 2>, double> cutEdges; ///< (a, b), a < b -> crossing parameter from a
+    std::map<int, Scheme> scheme;                  ///< tet -> scheme
+    std::map<int, bool> partial;                   ///< tet -> partially cut
+    CutSelection raw; ///< the selection itself (identity numbering only)
 };
 
 /// Runs selectCutNodes on the fixture with its nodes renumbered (newIndex[old]), its tets
@@ -131,9 +131,9 @@ Fixture nearerEndFixture(double zTop, double zBottom) {
 ///       while node 7 may be a cut node.
 /// Node 6 is not used. Without T0 both 3 and 7 are cut nodes.
 Fixture chainFixture(bool withPartialTet) {
-    Fixture f{{Vec3(1, 0.5, 1), Vec3(1, 0.5, -1), Vec3(3, 0, 0.5), Vec3(1, 0, 0), Vec3(0.5, -0.2, 1),
-               Vec3(0.2, -0.5, -1), Vec3(9, 9, 9), Vec3(0, -1, 0), Vec3(-1, -1.5, 1), Vec3(-1.5, -1, -1),
-               Vec3(-0.5, -2, -1)},
+    Fixture f{{Vec3(1, 0.5, 1), Vec3(1, 0.5, -1), Vec3(3, 0, 0.5), Vec3(1, 0, 0),
+               Vec3(0.5, -0.2, 1), Vec3(0.2, -0.5, -1), Vec3(9, 9, 9), Vec3(0, -1, 0),
+               Vec3(-1, -1.5, 1), Vec3(-1.5, -1, -1), Vec3(-0.5, -2, -1)},
               {{0, 1, 2, 3}, {3, 7, 4, 5}, {7, 8, 9, 10}},
               {{0, 1}, {4, 5}, {8, 9}, {8, 10}},
               {3, 7},
@@ -146,13 +146,14 @@ Fixture chainFixture(bool withPartialTet) {
 }
 
 /// Ta: nodes 0 and 1 on the sweep (plane z = 0), node 2 at height z2 > 0 and node 3 at
-/// z3 < 0, so edge 2-3 is crossed (complete, scheme Y); a sliver (its signed volume is
-/// (z2 + z3) / 6 for the order 0, 1, 2, 3), so its node order follows the sign. Tb = (2, 4, 5, 6) crosses
-/// the sweep around node 4 (A) and nominates node 2 through edge 2-4; Tc = (3, 7, 8, 9)
-/// likewise nominates node 3 through edge 3-7. Ta can take only one of the two.
+/// z3 < 0, so edge 2-3 is crossed (complete, scheme Y). Ta is a sliver, of signed volume
+/// (z2 + z3) / 6 in the order 0, 1, 2, 3, so its node order follows that sign.
+/// Tb = (2, 4, 5, 6) crosses the sweep around node 4 (A) and nominates node 2 through edge
+/// 2-4; Tc = (3, 7, 8, 9) likewise nominates node 3 through edge 3-7. Ta can take only one
+/// of the two.
 Fixture fourthCutNodeFixture(double z2, double z3) {
-    return {{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.3, 1, z2), Vec3(0.3, -1, z3), Vec3(0.3, 2, -1), Vec3(0, 2, 1),
-             Vec3(1, 2, 1), Vec3(0.3, -2, 1), Vec3(0, -2, -1), Vec3(1, -2, -1)},
+    return {{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.3, 1, z2), Vec3(0.3, -1, z3), Vec3(0.3, 2, -1),
+             Vec3(0, 2, 1), Vec3(1, 2, 1), Vec3(0.3, -2, 1), Vec3(0, -2, -1), Vec3(1, -2, -1)},
             {z2 + z3 > 0 ? Tet{0, 1, 2, 3} : Tet{0, 1, 3, 2}, {2, 4, 5, 6}, {3, 7, 8, 9}},
             {{2, 3}, {2, 4}, {4, 5}, {4, 6}, {3, 7}, {7, 8}, {7, 9}},
             {0, 1},
@@ -187,13 +188,19 @@ private slots:
         QTest::addColumn<int>("cutEdges");
         QTest::addColumn<Scheme>("scheme");
         // Node 0 is 0.05 from the sweep and the nearer end of its three edges.
-        QTest::newRow("nearer end a, within d") << 0.05 << -1.0 << hybrid(0.06) << std::vector<int>{0} << 0 << Scheme::Touch;
-        QTest::newRow("nearer end a, beyond d") << 0.05 << -1.0 << hybrid(0.04) << std::vector<int>{} << 3 << Scheme::A;
-        QTest::newRow("nearer end a, d = 0") << 0.05 << -1.0 << hybrid(0.0) << std::vector<int>{} << 3 << Scheme::A;
-        QTest::newRow("nearer end a, subdivision") << 0.05 << -1.0 << subdivision() << std::vector<int>{} << 3 << Scheme::A;
+        QTest::newRow("nearer end a, within d")
+            << 0.05 << -1.0 << hybrid(0.06) << std::vector<int>{0} << 0 << Scheme::Touch;
+        QTest::newRow("nearer end a, beyond d")
+            << 0.05 << -1.0 << hybrid(0.04) << std::vector<int>{} << 3 << Scheme::A;
+        QTest::newRow("nearer end a, d = 0")
+            << 0.05 << -1.0 << hybrid(0.0) << std::vector<int>{} << 3 << Scheme::A;
+        QTest::newRow("nearer end a, subdivision")
+            << 0.05 << -1.0 << subdivision() << std::vector<int>{} << 3 << Scheme::A;
         // Nodes 1-3 are 0.05 from the sweep, the nearer ends (b) of the three edges.
-        QTest::newRow("nearer end b, within d") << 1.0 << -0.05 << hybrid(0.06) << std::vector<int>{1, 2, 3} << 0 << Scheme::Z;
-        QTest::newRow("nearer end b, beyond d") << 1.0 << -0.05 << hybrid(0.04) << std::vector<int>{} << 3 << Scheme::A;
+        QTest::newRow("nearer end b, within d")
+            << 1.0 << -0.05 << hybrid(0.06) << std::vector<int>{1, 2, 3} << 0 << Scheme::Z;
+        QTest::newRow("nearer end b, beyond d")
+            << 1.0 << -0.05 << hybrid(0.04) << std::vector<int>{} << 3 << Scheme::A;
     }
     void nearerEndWithinD() {
         QFETCH(double, zTop);
@@ -212,7 +219,9 @@ private slots:
         for (double d : o.cutNodeDistance)
             QVERIFY(std::abs(d - 0.05) <= 1e-15);
         QCOMPARE(o.raw.maxCutNodeDistance,
-                 cutNodes.empty() ? 0.0 : *std::max_element(o.cutNodeDistance.begin(), o.cutNodeDistance.end()));
+                 cutNodes.empty()
+                     ? 0.0
+                     : *std::max_element(o.cutNodeDistance.begin(), o.cutNodeDistance.end()));
         // Sides: cut nodes 0; the others from the crossings, node 0 opposite to nodes 1-3.
         const TetCut& tc = o.raw.tets.at(0);
         const TetMesh mesh = TetMesh::fromArrays(f.nodes, f.tets);
@@ -249,7 +258,11 @@ private slots:
         QCOMPARE(int(o.raw.tets[0].side[2]), int(o.raw.tets[0].side[3]));
         QVERIFY(o.raw.tets[0].side[1] != 0);
         // Node 0 on the sweep and the rest of the tet above it: touched at a corner.
-        const Fixture touch{{Vec3(0, 0, 0), Vec3(1, 0, 1), Vec3(0, 1, 1), Vec3(0, 0, 1)}, {{0, 1, 2, 3}}, {}, {0}, sweep};
+        const Fixture touch{{Vec3(0, 0, 0), Vec3(1, 0, 1), Vec3(0, 1, 1), Vec3(0, 0, 1)},
+                            {{0, 1, 2, 3}},
+                            {},
+                            {0},
+                            sweep};
         o = select(touch, options);
         QCOMPARE(o.cutNodes, std::vector<int>{0});
         QCOMPARE(o.scheme.at(0), Scheme::Touch);
@@ -266,11 +279,12 @@ private slots:
         // end of edge 0-1, the only crossed edge (edges 1-2 and 1-3 cross z = 0 at x = 2/3,
         // beyond the sweep): partially cut (C); node 0 stays an ordinary node.
         const SweepSurface sweep = planeZ0(-2, 0.5, -2, 2);
-        const Fixture nominee{{Vec3(0, 0, 0.05), Vec3(0, 0.2, -1), Vec3(1, 0, 0.5), Vec3(1, 1, 0.5)},
-                              {{0, 2, 1, 3}},
-                              {{0, 1}},
-                              {},
-                              sweep};
+        const Fixture nominee{
+            {Vec3(0, 0, 0.05), Vec3(0, 0.2, -1), Vec3(1, 0, 0.5), Vec3(1, 1, 0.5)},
+            {{0, 2, 1, 3}},
+            {{0, 1}},
+            {},
+            sweep};
         Outcome o = select(nominee, options);
         QCOMPARE(o.cutNodes, std::vector<int>{});
         QCOMPARE(int(o.cutEdges.size()), 1);
@@ -278,11 +292,12 @@ private slots:
         QCOMPARE(o.partial.at(0), true);
         // Node 0 exactly on the sweep, edge 1-2 crossed below it and edge 1-3 crossing z = 0
         // beyond the sweep: partial, so node 0 is not a cut node although it is on the sweep.
-        const Fixture onSweep{{Vec3(0, 0, 0), Vec3(0, 0.5, -0.5), Vec3(0, 0.5, 0.5), Vec3(1.5, 0.5, 0.5)},
-                              {{0, 1, 2, 3}},
-                              {{1, 2}},
-                              {0},
-                              sweep};
+        const Fixture onSweep{
+            {Vec3(0, 0, 0), Vec3(0, 0.5, -0.5), Vec3(0, 0.5, 0.5), Vec3(1.5, 0.5, 0.5)},
+            {{0, 1, 2, 3}},
+            {{1, 2}},
+            {0},
+            sweep};
         o = select(onSweep, options);
         QCOMPARE(o.cutNodes, std::vector<int>{});
         QCOMPARE(o.scheme.at(0), Scheme::C);
@@ -322,19 +337,26 @@ private slots:
         QTest::addColumn<bool>("reverseEdges");
         const std::vector<int> shuffled11{4, 9, 0, 7, 2, 10, 5, 1, 8, 3, 6};
         for (int fixture : {0, 1, 2}) {
-            const int n = fixture == 0 ? 11 : 10;  // nodes of the fixture
+            const int n = fixture == 0 ? 11 : 10; // nodes of the fixture
             std::vector<int> rev(n), shuf;
             for (int i = 0; i < n; ++i)
                 rev[i] = n - 1 - i;
             for (int v : shuffled11)
                 if (v < n)
                     shuf.push_back(v);
-            const char* name = fixture == 0 ? "chain" : fixture == 1 ? "fourth cut node, z2 nearer" : "fourth cut node, z3 nearer";
-            QTest::addRow("%s, nodes reversed", name) << fixture << rev << std::vector<int>{} << false;
-            QTest::addRow("%s, nodes shuffled", name) << fixture << shuf << std::vector<int>{} << false;
-            QTest::addRow("%s, tets reversed", name) << fixture << std::vector<int>{} << std::vector<int>{2, 1, 0} << false;
-            QTest::addRow("%s, crossed edges reversed", name) << fixture << std::vector<int>{} << std::vector<int>{} << true;
-            QTest::addRow("%s, everything permuted", name) << fixture << shuf << std::vector<int>{1, 2, 0} << true;
+            const char* name = fixture == 0   ? "chain"
+                               : fixture == 1 ? "fourth cut node, z2 nearer"
+                                              : "fourth cut node, z3 nearer";
+            QTest::addRow("%s, nodes reversed", name)
+                << fixture << rev << std::vector<int>{} << false;
+            QTest::addRow("%s, nodes shuffled", name)
+                << fixture << shuf << std::vector<int>{} << false;
+            QTest::addRow("%s, tets reversed", name)
+                << fixture << std::vector<int>{} << std::vector<int>{2, 1, 0} << false;
+            QTest::addRow("%s, crossed edges reversed", name)
+                << fixture << std::vector<int>{} << std::vector<int>{} << true;
+            QTest::addRow("%s, everything permuted", name)
+                << fixture << shuf << std::vector<int>{1, 2, 0} << true;
         }
     }
     void resultDoesNotDependOnOrder() {
@@ -342,7 +364,7 @@ private slots:
         QFETCH(std::vector<int>, newIndex);
         QFETCH(std::vector<int>, tetOrder);
         QFETCH(bool, reverseEdges);
-        const Fixture f = fixture == 0 ? chainFixture(true)
+        const Fixture f = fixture == 0   ? chainFixture(true)
                           : fixture == 1 ? fourthCutNodeFixture(0.01, -0.02)
                                          : fourthCutNodeFixture(0.02, -0.01);
         const SelectOptions options = hybrid(0.1);
@@ -364,8 +386,10 @@ private slots:
         QTest::addColumn<std::vector<int>>("cutNodes");
         QTest::addColumn<Scheme>("schemeB");
         QTest::addColumn<Scheme>("schemeC");
-        QTest::newRow("node 2 nearer") << 0.01 << -0.02 << std::vector<int>{0, 1, 2} << Scheme::X << Scheme::A;
-        QTest::newRow("node 3 nearer") << 0.02 << -0.01 << std::vector<int>{0, 1, 3} << Scheme::A << Scheme::X;
+        QTest::newRow("node 2 nearer")
+            << 0.01 << -0.02 << std::vector<int>{0, 1, 2} << Scheme::X << Scheme::A;
+        QTest::newRow("node 3 nearer")
+            << 0.02 << -0.01 << std::vector<int>{0, 1, 3} << Scheme::A << Scheme::X;
     }
     void aTetNeverGetsAFourthCutNode() {
         QFETCH(double, z2);
@@ -382,7 +406,8 @@ private slots:
         QCOMPARE(o.scheme.at(1), schemeB);
         QCOMPARE(o.scheme.at(2), schemeC);
         // The refused node's edge to its other tet is split; edge 2-3 has a cut node.
-        const std::array<int, 2> refusedEdge = cutNodes.back() == 2 ? std::array<int, 2>{3, 7} : std::array<int, 2>{2, 4};
+        const std::array<int, 2> refusedEdge =
+            cutNodes.back() == 2 ? std::array<int, 2>{3, 7} : std::array<int, 2>{2, 4};
         QVERIFY(o.cutEdges.count(refusedEdge));
         QVERIFY(!o.cutEdges.count({2, 3}));
     }
@@ -391,7 +416,7 @@ private slots:
         QTest::addColumn<double>("zTop");
         QTest::addColumn<double>("zBottom");
         QTest::addColumn<double>("minEdgeFraction");
-        QTest::addColumn<double>("expectedT");  ///< from node 0; NaN: the exact crossing
+        QTest::addColumn<double>("expectedT"); ///< from node 0; NaN: the exact crossing
         const double nan = std::numeric_limits<double>::quiet_NaN();
         QTest::newRow("1e-9 from node 0, default fraction") << 1e-9 << -1.0 << 1e-6 << 1e-6;
         QTest::newRow("1e-9 from node 0, fraction 1e-3") << 1e-9 << -1.0 << 1e-3 << 1e-3;
@@ -418,11 +443,12 @@ private slots:
             const EdgeCrossing& x = crossings.edges[k];
             QCOMPARE(c.a, 0);
             if (std::isnan(expectedT)) {
-                QVERIFY(c.hit.t == x.hit.t);  // bit for bit
+                QVERIFY(c.hit.t == x.hit.t); // bit for bit
                 QCOMPARE(c.hit.point, x.hit.point);
             } else {
                 QVERIFY2(c.hit.t == expectedT, qPrintable(QString::number(c.hit.t, 'g', 17)));
-                QCOMPARE(c.hit.point, Vec3(mesh.pos(c.a) + expectedT * (mesh.pos(c.b) - mesh.pos(c.a))));
+                QCOMPARE(c.hit.point,
+                         Vec3(mesh.pos(c.a) + expectedT * (mesh.pos(c.b) - mesh.pos(c.a))));
             }
             QCOMPARE(o.raw.cutEdgeIndex.at(edgeKey(c.a, c.b)), int(k));
         }

@@ -22,16 +22,17 @@ namespace {
 /// Two tets on face (0, 1, 2) in the plane z = 0: tet 0 = (0, 1, 2, 3) above, tet 1 =
 /// (0, 2, 1, 4) below.
 TetMesh twoTets() {
-    return TetMesh::fromArrays({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0.2, 0.2, 1), Vec3(0.3, 0.3, -1)},
-                               {{0, 1, 2, 3}, {0, 2, 1, 4}});
+    return TetMesh::fromArrays(
+        {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0.2, 0.2, 1), Vec3(0.3, 0.3, -1)},
+        {{0, 1, 2, 3}, {0, 2, 1, 4}});
 }
 
 /// Four tets around edge (0, 1) from (0, 0, -1) to (0, 0, 1) through the ring 2..5 at
 /// (1, 0, 0), (0, 1, 0), (-1, 0, 0), (0, -1, 0): tets 0 and 1 at y >= 0, tets 2 and 3 at
 /// y <= 0. The plane y = 0 holds nodes 0, 1, 2 and 4.
 TetMesh ring() {
-    return TetMesh::fromArrays({Vec3(0, 0, -1), Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0),
-                                Vec3(0, -1, 0)},
+    return TetMesh::fromArrays({Vec3(0, 0, -1), Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(0, 1, 0),
+                                Vec3(-1, 0, 0), Vec3(0, -1, 0)},
                                {{0, 1, 2, 3}, {0, 1, 3, 4}, {0, 1, 4, 5}, {0, 1, 5, 2}});
 }
 
@@ -44,33 +45,33 @@ struct SeparateCase {
 SeparateCase makeCase(int id) {
     SeparateCase c;
     switch (id) {
-    case 0:  // the shared face's corners are cut nodes, the tets on opposite sides
+    case 0: // the shared face's corners are cut nodes, the tets on opposite sides
         c.mesh = twoTets();
         c.selection.cutNodes = {0, 1, 2};
         c.decomposition.tetSide = {{0, 1}, {1, -1}};
         break;
-    case 1:  // the same with node 2 a split point (the key of its cut edge is not read)
+    case 1: // the same with node 2 a split point (the key of its cut edge is not read)
         c.mesh = twoTets();
         c.selection.cutNodes = {0, 1};
         c.decomposition.edgePoint = {{edgeKey(3, 4), 2}};
         c.decomposition.tetSide = {{0, 1}, {1, -1}};
         break;
-    case 2:  // node 2 not on the cut (the border of a partial cut): the face joins the tets
+    case 2: // node 2 not on the cut (the border of a partial cut): the face joins the tets
         c.mesh = twoTets();
         c.selection.cutNodes = {0, 1};
         c.decomposition.tetSide = {{0, 1}, {1, -1}};
         break;
-    case 3:  // both tets on the same side: no cut face
+    case 3: // both tets on the same side: no cut face
         c.mesh = twoTets();
         c.selection.cutNodes = {0, 1, 2};
         c.decomposition.tetSide = {{0, 1}, {1, 1}};
         break;
-    case 4:  // tets inside a partially cut tet (side 0) are never separated
+    case 4: // tets inside a partially cut tet (side 0) are never separated
         c.mesh = twoTets();
         c.selection.cutNodes = {0, 1, 2};
         c.decomposition.tetSide = {{0, 0}, {1, 0}};
         break;
-    case 5:  // the ring cut by y = 0: two tets on each side
+    case 5: // the ring cut by y = 0: two tets on each side
         c.mesh = ring();
         c.selection.cutNodes = {0, 1, 2, 4};
         c.decomposition.tetSide = {{0, 1}, {1, 1}, {2, -1}, {3, -1}};
@@ -161,7 +162,9 @@ private slots:
                         continue;
                     const std::set<int> a(mesh.tet(t).begin(), mesh.tet(t).end());
                     for (int v : mesh.tet(u))
-                        QVERIFY2(!a.count(v), qPrintable(QString("tets %1 and %2 share node %3").arg(t).arg(u).arg(v)));
+                        QVERIFY2(!a.count(v),
+                                 qPrintable(
+                                     QString("tets %1 and %2 share node %3").arg(t).arg(u).arg(v)));
                 }
     }
 };

@@ -68,7 +68,8 @@ private slots:
         // The unit tet split at the middle of edge 0-1 (node 4 at (1/2, 0, 0)) into
         // (0, 4, 2, 3) and (4, 1, 2, 3): updating the nodes whose tets changed (all five)
         // keeps the total mass, and gives what computing all masses from scratch gives.
-        TetMesh m = TetMesh::fromArrays({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}, {{0, 1, 2, 3}});
+        TetMesh m = TetMesh::fromArrays(
+            {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}, {{0, 1, 2, 3}});
         const double density = 2;
         computeLumpedMasses(m, density);
         const double before = totalMass(m);
@@ -80,7 +81,8 @@ private slots:
         // Before the update the masses are stale: node 4 has none.
         QCOMPARE(m.masses()[p], 0.0);
         updateMasses(m, {0, 1, 2, 3, p}, density);
-        QVERIFY2(std::abs(totalMass(m) - before) <= 1e-15 * before, qPrintable(QString::number(totalMass(m), 'g', 17)));
+        QVERIFY2(std::abs(totalMass(m) - before) <= 1e-15 * before,
+                 qPrintable(QString::number(totalMass(m), 'g', 17)));
         // Nodes 0 and 1 in one half (volume 1/12); nodes 2, 3 and the new one in both.
         QCOMPARE(m.masses()[0], density / 48.0);
         QCOMPARE(m.masses()[1], density / 48.0);
@@ -94,17 +96,19 @@ private slots:
 
     void stiffnessesFollowEq4() {
         // Edge 0-1 has rest length 2; the tet has rest volume 1/3.
-        TetMesh m = TetMesh::fromArrays({Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}, {{0, 1, 2, 3}});
+        TetMesh m = TetMesh::fromArrays(
+            {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}, {{0, 1, 2, 3}});
         const double masses[] = {0.1, 0.2, 0.3, 0.4};
         std::copy(std::begin(masses), std::end(masses), m.masses().begin());
         Material mat;
         mat.stiffness = 5.0;
-        QCOMPARE(springStiffness(m, 0, 1, mat), 5.0 * (0.1 + 0.2) / 4.0);   // l0^2 = 4
-        QCOMPARE(springStiffness(m, 2, 3, mat), 5.0 * (0.3 + 0.4) / 2.0);   // l0^2 = 2
-        QCOMPARE(volumeStiffness(m, 0, mat), 5.0 * 1.0 / (1.0 / 9.0));      // V0^2 = 1/9
+        QCOMPARE(springStiffness(m, 0, 1, mat), 5.0 * (0.1 + 0.2) / 4.0); // l0^2 = 4
+        QCOMPARE(springStiffness(m, 2, 3, mat), 5.0 * (0.3 + 0.4) / 2.0); // l0^2 = 2
+        QCOMPARE(volumeStiffness(m, 0, mat), 5.0 * 1.0 / (1.0 / 9.0));    // V0^2 = 1/9
         // Degenerate rest geometry: no stiffness instead of a division by zero.
-        TetMesh flat = TetMesh::fromArrays({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(0, 0, 0)},
-                                           {{0, 1, 2, 3}});
+        TetMesh flat = TetMesh::fromArrays(
+            {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(0, 0, 0)},
+            {{0, 1, 2, 3}});
         std::fill(flat.masses().begin(), flat.masses().end(), 1.0);
         QCOMPARE(volumeStiffness(flat, 0, mat), 0.0);
         QCOMPARE(springStiffness(flat, 0, 4, mat), 0.0);

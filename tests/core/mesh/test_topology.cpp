@@ -23,8 +23,8 @@ TetMesh ringAroundEdge(bool closed) {
     std::vector<Tet> tets{{0, 1, 2, 3}, {0, 1, 3, 4}, {0, 1, 4, 5}};
     if (closed)
         tets.push_back({0, 1, 5, 2});
-    return TetMesh::fromArrays({Vec3(0, 0, -1), Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0),
-                                Vec3(0, -1, 0)},
+    return TetMesh::fromArrays({Vec3(0, 0, -1), Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(0, 1, 0),
+                                Vec3(-1, 0, 0), Vec3(0, -1, 0)},
                                tets);
 }
 
@@ -64,17 +64,20 @@ private slots:
         QTest::addColumn<Edges>("boundary");
         QTest::addColumn<Edges>("interior");
         // 0: one tet: every edge is on the boundary.
-        QTest::newRow("single tet") << 0 << Edges{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}, {3, 0}}
-                                    << Edges{};
+        QTest::newRow("single tet")
+            << 0 << Edges{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}, {3, 0}} << Edges{};
         // 1: two tets on face (0, 1, 2): the shared face is interior, but each of its edges
         // also lies on a face of one tet only, so all nine edges are on the boundary.
         QTest::newRow("two tets sharing a face")
-            << 1 << Edges{{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}, {0, 4}, {1, 4}, {2, 4}} << Edges{};
+            << 1 << Edges{{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}, {0, 4}, {1, 4}, {2, 4}}
+            << Edges{};
         // 2: the closed ring: its central edge is inside, every other edge on the hull.
         QTest::newRow("closed ring around an edge")
-            << 2 << Edges{{0, 2}, {1, 3}, {2, 3}, {3, 4}, {4, 5}, {5, 2}, {0, 5}, {1, 4}} << Edges{{0, 1}, {1, 0}};
+            << 2 << Edges{{0, 2}, {1, 3}, {2, 3}, {3, 4}, {4, 5}, {5, 2}, {0, 5}, {1, 4}}
+            << Edges{{0, 1}, {1, 0}};
         // 3: the same ring with one tet removed: the central edge is on the boundary again.
-        QTest::newRow("open ring around an edge") << 3 << Edges{{0, 1}, {1, 0}, {2, 3}, {0, 2}} << Edges{};
+        QTest::newRow("open ring around an edge")
+            << 3 << Edges{{0, 1}, {1, 0}, {2, 3}, {0, 2}} << Edges{};
         // Pairs that are not edges of the mesh are not boundary edges.
         QTest::newRow("not an edge: opposite ring nodes") << 2 << Edges{} << Edges{{2, 4}, {3, 5}};
         QTest::newRow("not an edge: apexes of two tets") << 1 << Edges{} << Edges{{3, 4}};
@@ -86,20 +89,27 @@ private slots:
         TetMesh m;
         switch (mesh) {
         case 0:
-            m = TetMesh::fromArrays({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}, {{0, 1, 2, 3}});
+            m = TetMesh::fromArrays({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)},
+                                    {{0, 1, 2, 3}});
             break;
         case 1:
             m = TetMesh::fromArrays({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0.2, 0.2, 1),
                                      Vec3(0.3, 0.3, -1)},
                                     {{0, 1, 2, 3}, {0, 2, 1, 4}});
             break;
-        case 2: m = ringAroundEdge(true); break;
-        case 3: m = ringAroundEdge(false); break;
+        case 2:
+            m = ringAroundEdge(true);
+            break;
+        case 3:
+            m = ringAroundEdge(false);
+            break;
         }
         for (const auto& [a, b] : boundary)
-            QVERIFY2(resect::isBoundaryEdge(m, a, b), qPrintable(QString("(%1, %2)").arg(a).arg(b)));
+            QVERIFY2(resect::isBoundaryEdge(m, a, b),
+                     qPrintable(QString("(%1, %2)").arg(a).arg(b)));
         for (const auto& [a, b] : interior)
-            QVERIFY2(!resect::isBoundaryEdge(m, a, b), qPrintable(QString("(%1, %2)").arg(a).arg(b)));
+            QVERIFY2(!resect::isBoundaryEdge(m, a, b),
+                     qPrintable(QString("(%1, %2)").arg(a).arg(b)));
     }
 
     void boundaryQueriesMatchTheirDefinition() {

@@ -34,14 +34,17 @@ private slots:
         QTest::addColumn<Pairs>("unions");
         QTest::addColumn<std::vector<int>>("labels");
         QTest::newRow("no union") << 3 << Pairs{} << std::vector<int>{0, 1, 2};
-        QTest::newRow("a chain") << 4 << Pairs{{0, 1}, {1, 2}, {2, 3}} << std::vector<int>{0, 0, 0, 0};
-        QTest::newRow("two pairs, interleaved") << 4 << Pairs{{0, 2}, {3, 1}} << std::vector<int>{0, 1, 0, 1};
-        QTest::newRow("later elements first") << 6 << Pairs{{5, 4}, {4, 3}, {1, 2}}
-                                                << std::vector<int>{0, 1, 1, 2, 2, 2};
-        QTest::newRow("repeated and reflexive unions") << 5 << Pairs{{1, 3}, {3, 1}, {2, 2}, {1, 3}}
-                                                       << std::vector<int>{0, 1, 2, 1, 3};
+        QTest::newRow("a chain") << 4 << Pairs{{0, 1}, {1, 2}, {2, 3}}
+                                 << std::vector<int>{0, 0, 0, 0};
+        QTest::newRow("two pairs, interleaved")
+            << 4 << Pairs{{0, 2}, {3, 1}} << std::vector<int>{0, 1, 0, 1};
+        QTest::newRow("later elements first")
+            << 6 << Pairs{{5, 4}, {4, 3}, {1, 2}} << std::vector<int>{0, 1, 1, 2, 2, 2};
+        QTest::newRow("repeated and reflexive unions")
+            << 5 << Pairs{{1, 3}, {3, 1}, {2, 2}, {1, 3}} << std::vector<int>{0, 1, 2, 1, 3};
         QTest::newRow("two trees joined at their leaves")
-            << 8 << Pairs{{0, 1}, {1, 2}, {2, 3}, {7, 6}, {6, 5}, {5, 4}, {0, 7}} << std::vector<int>(8, 0);
+            << 8 << Pairs{{0, 1}, {1, 2}, {2, 3}, {7, 6}, {6, 5}, {5, 4}, {0, 7}}
+            << std::vector<int>(8, 0);
     }
     void labelsAfterUnions() {
         QFETCH(int, n);
@@ -78,10 +81,10 @@ private slots:
         UnionFind sets(6);
         sets.unite(0, 1);
         QCOMPARE(sets.find(0), 1);
-        sets.unite(2, 0);  // root of 0's set is 1
+        sets.unite(2, 0); // root of 0's set is 1
         QCOMPARE(sets.find(2), 1);
         sets.unite(3, 4);
-        sets.unite(1, 3);  // {0, 1, 2} under 4, the root of 3's set
+        sets.unite(1, 3); // {0, 1, 2} under 4, the root of 3's set
         for (int i : {0, 1, 2, 3, 4})
             QCOMPARE(sets.find(i), 4);
         QCOMPARE(sets.find(5), 5);
