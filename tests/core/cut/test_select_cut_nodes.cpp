@@ -3,8 +3,9 @@
 // d becomes a cut node (and its crossed edges are not split), beyond d it does not; a node
 // exactly on the sweep is always a cut node, also for subdivision; nodes of partially cut
 // tets are never cut nodes, through the fixed-point iteration; the result does not depend on
-// the order of nodes, tets or crossed edges; a tet never gets a fourth cut node (the nearer
-// nominee wins); crossings too close to an end are clamped to minEdgeFraction.
+// the order of nodes, tets or crossed edges (except in exact midpoint ties: an expected
+// failure documents it); a tet never gets a fourth cut node (the nearer nominee wins);
+// crossings too close to an end are clamped to minEdgeFraction.
 #include "step_fixtures.h"
 
 #include "core/cut/select_cut_nodes.h"
@@ -410,6 +411,20 @@ private slots:
             cutNodes.back() == 2 ? std::array<int, 2>{3, 7} : std::array<int, 2>{2, 4};
         QVERIFY(o.cutEdges.count(refusedEdge));
         QVERIFY(!o.cutEdges.count({2, 3}));
+    }
+
+    void midpointTieDependsOnNodeNumbering() {
+        // Known limitation, kept as an expected failure: an edge crossed exactly at its middle
+        // nominates its lower-indexed end (t <= 0.5 picks a). Here node 0 is 0.05 above the
+        // sweep and nodes 1-3 0.05 below it, so t = 0.05 / 0.1 = 0.5 exactly on all three
+        // edges: numbered first, node 0 becomes the one cut node (Touch); numbered last, nodes
+        // 1-3 become cut nodes (Z). Any other tie rule changes cut results in such ties.
+        const Fixture f = nearerEndFixture(0.05, -0.05);
+        const Outcome first = select(f, hybrid(0.06));
+        const Outcome last = select(f, hybrid(0.06), {3, 0, 1, 2});
+        QCOMPARE(first.cutNodes, std::vector<int>{0});
+        QEXPECT_FAIL("", "exact midpoint ties go to the lower-indexed end of the edge", Continue);
+        QCOMPARE(last.cutNodes, first.cutNodes);
     }
 
     void crossingsNearAnEndAreClamped_data() {
