@@ -1,7 +1,8 @@
 #include "core/cut/separate.h"
 
+#include "core/mesh/union_find.h"
+
 #include <algorithm>
-#include <numeric>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -24,13 +25,7 @@ Separation separate(TetMesh& mesh, const CutSelection& selection, const Decompos
     for (int v : cutVertices) {
         const std::vector<int> star(mesh.nodeTets(v).begin(), mesh.nodeTets(v).end());
         const int n = static_cast<int>(star.size());
-        std::vector<int> parent(n);
-        std::iota(parent.begin(), parent.end(), 0);
-        const auto find = [&](int x) {
-            while (parent[x] != x)
-                x = parent[x] = parent[parent[x]];
-            return x;
-        };
+        UnionFind groups(n);  // over the positions k of star
         // Faces containing v, keyed by their other two nodes.
         std::unordered_map<std::uint64_t, int> firstTetOfFace;
         for (int k = 0; k < n; ++k) {
@@ -50,7 +45,7 @@ Separation separate(TetMesh& mesh, const CutSelection& selection, const Decompos
                     const bool cutFace = s1 != 0 && s2 != 0 && s1 != s2 && isCut.count(q[i]) &&
                                          isCut.count(q[j]);
                     if (!cutFace)
-                        parent[find(k)] = find(other);
+                        groups.unite(k, other);
                 }
             }
         }
@@ -59,12 +54,12 @@ Separation separate(TetMesh& mesh, const CutSelection& selection, const Decompos
         int keeper = -1;
         for (int k = 0; k < n && keeper < 0; ++k)
             if (sideOfTet(star[k]) > 0)
-                keeper = find(k);
+                keeper = groups.find(k);
         if (keeper < 0)
-            keeper = find(0);
+            keeper = groups.find(0);
         nodeOfGroup[keeper] = v;
         for (int k = 0; k < n; ++k) {
-            const int g = find(k);
+            const int g = groups.find(k);
             auto it = nodeOfGroup.find(g);
             int node;
             if (it == nodeOfGroup.end()) {

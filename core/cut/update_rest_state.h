@@ -13,9 +13,11 @@ namespace resect {
 /// Eq. 3 for the given nodes: m_i = k * sum over incident tets of V0 / 4 (density k).
 void updateMasses(TetMesh& mesh, const std::vector<int>& nodes, double density);
 
-/// Eq. 4, spring on edge (a, b): k_s = k (m_a + m_b) / l0^2 (stiffness constant k).
+/// Eq. 4, spring on edge (a, b): k_s = k (m_a + m_b) / l0^2 (stiffness constant k); 0 for
+/// an edge of zero rest length.
 double springStiffness(const TetMesh& mesh, int a, int b, const Material& material);
-/// Eq. 4, volume term of tet t: k_v = k (m_1 + m_2 + m_3 + m_4) / V0^2.
+/// Eq. 4, volume term of tet t: k_v = k (m_1 + m_2 + m_3 + m_4) / V0^2; 0 for a tet of zero
+/// rest volume.
 double volumeStiffness(const TetMesh& mesh, int t, const Material& material);
 
 } // namespace resect

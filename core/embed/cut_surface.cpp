@@ -1,6 +1,7 @@
 #include "core/embed/cut_surface.h"
 
 #include "core/embed/triangulate_cut.h"
+#include "core/mesh/union_find.h"
 #include "core/sweep/intersect_segment.h"
 
 #include <algorithm>
@@ -332,19 +333,15 @@ Status cutSurface(TriangleSurface& surface, std::vector<Vec3>* rest, const Sweep
         for (std::size_t j = i + 1; j < boxes.size() && !overlapping; ++j)
             overlapping = boxes[i].intersects(boxes[j]);
     if (overlapping) {
-        std::vector<int> parent(surface.vertexCount());
-        std::iota(parent.begin(), parent.end(), 0);
-        const auto find = [&](int x) {
-            while (parent[x] != x)
-                x = parent[x] = parent[parent[x]];
-            return x;
-        };
+        // A polygon's group is its piece's representative; polygonsOfPiece is ordered by it,
+        // so the order of the caps follows UnionFind's documented choice of root.
+        UnionFind pieces(surface.vertexCount());
         for (const Tri& q : surface.triangles) {
-            parent[find(q[1])] = find(q[0]);
-            parent[find(q[2])] = find(q[0]);
+            pieces.unite(q[1], q[0]);
+            pieces.unite(q[2], q[0]);
         }
         for (std::size_t i = 0; i < plusPolygons.size(); ++i)
-            group[i] = find(plusPolygons[i][0]);
+            group[i] = pieces.find(plusPolygons[i][0]);
     }
     std::map<int, std::vector<std::vector<int>>> polygonsOfPiece;
     for (std::size_t i = 0; i < plusPolygons.size(); ++i) {

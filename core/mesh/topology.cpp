@@ -1,7 +1,8 @@
 #include "core/mesh/topology.h"
 
+#include "core/mesh/union_find.h"
+
 #include <algorithm>
-#include <numeric>
 #include <unordered_map>
 
 namespace resect {
@@ -20,14 +21,6 @@ struct TriHash {
 Tri sorted(Tri f) {
     std::sort(f.begin(), f.end());
     return f;
-}
-
-int findRoot(std::vector<int>& parent, int x) {
-    while (parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
 }
 
 } // namespace
@@ -83,20 +76,6 @@ std::vector<BoundaryFace> boundaryFaces(const TetMesh& mesh) {
     return result;
 }
 
-bool isBoundaryEdge(const TetMesh& mesh, int a, int b) {
-    std::vector<int> around, scratch;
-    mesh.edgeTets(a, b, around);
-    for (int t : around)
-        for (int v : mesh.tet(t)) {
-            if (v == a || v == b)
-                continue;
-            mesh.faceTets(a, b, v, scratch);
-            if (scratch.size() == 1)
-                return true;
-        }
-    return false;
-}
-
 bool isBoundaryNode(const TetMesh& mesh, int n) {
     std::vector<int> scratch;
     for (int t : mesh.nodeTets(n)) {
@@ -113,28 +92,39 @@ bool isBoundaryNode(const TetMesh& mesh, int n) {
     return false;
 }
 
-Components connectedComponents(const TetMesh& mesh) {
-    // Union-find over nodes: the nodes of a tet are joined; tets inherit their nodes' root.
-    std::vector<int> parent(mesh.nodeCount());
-    std::iota(parent.begin(), parent.end(), 0);
-    for (const Tet& q : mesh.tets())
-        for (int i = 1; i < 4; ++i) {
-            const int a = findRoot(parent, q[0]);
-            const int b = findRoot(parent, q[i]);
-            if (a != b)
-                parent[std::max(a, b)] = std::min(a, b);
-        }
-    Components c;
-    c.nodeComponent.assign(mesh.nodeCount(), -1);
-    std::vector<int> label(mesh.nodeCount(), -1);
-    for (int n = 0; n < mesh.nodeCount(); ++n) {
-        if (mesh.nodeTets(n).empty())
+bool isBoundaryEdge(const TetMesh& mesh, int a, int b) {
+    // Every face (a, b, v) lies in tets around the edge; it belongs to one tet only when v is
+    // the third node of exactly one of them.
+    std::vector<int> third;
+    for (int t : mesh.nodeTets(a)) {
+        const Tet& q = mesh.tet(t);
+        if (std::find(q.begin(), q.end(), b) == q.end())
             continue;
-        const int r = findRoot(parent, n);
-        if (label[r] < 0)
-            label[r] = c.count++;
-        c.nodeComponent[n] = label[r];
+        for (int v : q)
+            if (v != a && v != b)
+                third.push_back(v);
     }
+    std::sort(third.begin(), third.end());
+    for (std::size_t i = 0; i < third.size();) {
+        std::size_t j = i + 1;
+        while (j < third.size() && third[j] == third[i])
+            ++j;
+        if (j - i == 1)
+            return true;
+        i = j;
+    }
+    return false;
+}
+
+Components connectedComponents(const TetMesh& mesh) {
+    // Union-find over nodes: the nodes of a tet are joined; tets inherit their nodes' set.
+    // Components are numbered in the order of their lowest node.
+    UnionFind sets(mesh.nodeCount());
+    for (const Tet& q : mesh.tets())
+        for (int i = 1; i < 4; ++i)
+            sets.unite(q[i], q[0]);
+    Components c;
+    c.count = sets.compact(c.nodeComponent, [&](int n) { return !mesh.nodeTets(n).empty(); });
     c.tetComponent.resize(mesh.tetCount());
     for (int t = 0; t < mesh.tetCount(); ++t)
         c.tetComponent[t] = c.nodeComponent[mesh.tet(t)[0]];

@@ -31,7 +31,9 @@ std::vector<BoundaryFace> boundaryFaces(const TetMesh& mesh);
 /// True if node n has an incident face that belongs to one tet only (O(valence^2)).
 bool isBoundaryNode(const TetMesh& mesh, int n);
 
-/// True if the edge (a, b) has an incident face that belongs to one tet only (O(valence)).
+/// True if edge (a, b), a != b, has an incident face that belongs to one tet only: the edge
+/// lies on the mesh boundary (the original surface or an earlier cut). False if no tet
+/// contains the edge. O(v log v) for v the valence of a.
 bool isBoundaryEdge(const TetMesh& mesh, int a, int b);
 
 /// Connected components: tets are connected when they share a node (nodes separated by a

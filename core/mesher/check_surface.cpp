@@ -8,6 +8,8 @@
 
 #include "core/mesher/check_surface.h"
 
+#include "core/mesh/union_find.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
@@ -52,26 +54,6 @@ bool goodIndices(const Tri& t, int vertexCount) {
     return t[0] != t[1] && t[1] != t[2] && t[0] != t[2];
 }
 
-/// Minimal union-find over a small local index range.
-class UnionFind {
-public:
-    void reset(int n) {
-        m_parent.resize(static_cast<std::size_t>(n));
-        std::iota(m_parent.begin(), m_parent.end(), 0);
-    }
-    int find(int i) {
-        while (m_parent[i] != i) {
-            m_parent[i] = m_parent[m_parent[i]];
-            i = m_parent[i];
-        }
-        return i;
-    }
-    void unite(int a, int b) { m_parent[find(a)] = find(b); }
-
-private:
-    std::vector<int> m_parent;
-};
-
 /// Counts the vertices whose incident triangles do not form a single edge-connected
 /// fan (two cones touching at a vertex, a "bow tie"). `good` marks the triangles with
 /// valid indices; only those are considered.
@@ -111,11 +93,7 @@ int countNonManifoldVertices(const TriangleSurface& s, const std::vector<char>& 
         for (std::size_t k = 1; k < spokes.size(); ++k)
             if (spokes[k].first == spokes[k - 1].first)
                 uf.unite(spokes[k].second, spokes[k - 1].second);
-        int fans = 0;
-        for (int i = 0; i < n; ++i)
-            if (uf.find(i) == i)
-                ++fans;
-        if (fans > 1)
+        if (uf.setCount() > 1)  // more than one fan
             ++bad;
     }
     return bad;

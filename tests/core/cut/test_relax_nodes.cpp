@@ -1,9 +1,15 @@
-// Relaxation (section 4.6) and the rest-state update (section 4.7): relaxation never lowers
-// the minimum radius ratio, conserves the rest volume, keeps nodes on the sweep on it and
-// fixed nodes in place; masses follow Eq. 3 after any sequence of cuts; stiffnesses Eq. 4.
+// Relaxation (section 4.6). Step 7 alone on a literal octahedron around a displaced centre
+// node: a node on the cut moves within the sweep, an interior node freely, copies together,
+// fixed and boundary nodes not at all, a node in equilibrium stays; the volume is kept and
+// the smallest radius ratio never drops. Through the cutter: the same on random cuts, and
+// masses follow Eq. 3 after any sequence of cuts (the rest state alone is tested in
+// test_update_rest_state).
 #include "cut_checks.h"
+#include "step_fixtures.h"
 
-#include "core/cut/update_rest_state.h"
+#include "core/cut/relax_nodes.h"
+#include "core/mesh/predicates.h"
+
 #include "core/mesh/box_mesh.h"
 #include "core/mesh/masses.h"
 #include "core/mesh/quality.h"
@@ -16,6 +22,7 @@
 
 using namespace resect;
 using resect::testing::cutViolations;
+using resect::testing::planeZ0;
 
 namespace {
 
@@ -44,11 +51,112 @@ SweepSurface tiltedPlane(double scale, unsigned seed) {
     return sweep;
 }
 
+/// The octahedron with corners at distance 1 on the axes (nodes 0-5: -z, +z, +x, +y, -x,
+/// -y) split into eight tets around a centre node 6 at `centre`; with `copy`, the four tets
+/// below z = 0 use node 7 instead, a copy of the centre (as separation leaves a cut node).
+TetMesh octahedron(const Vec3& centre, bool copy) {
+    std::vector<Vec3> nodes{Vec3(0, 0, -1), Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0), Vec3(0, -1, 0),
+                            centre};
+    const int c = copy ? 7 : 6;
+    if (copy)
+        nodes.push_back(centre);
+    return TetMesh::fromArrays(nodes, {{6, 2, 3, 1}, {6, 3, 4, 1}, {6, 4, 5, 1}, {6, 5, 2, 1},
+                                       {c, 3, 2, 0}, {c, 4, 3, 0}, {c, 5, 4, 0}, {c, 2, 5, 0}});
+}
+
+/// Counts of a RelaxResult: movable (interior) nodes, nodes on the sweep, fixed nodes.
+using Counts = std::array<int, 3>;
+
 } // namespace
+
+Q_DECLARE_METATYPE(resect::Vec3)
+Q_DECLARE_METATYPE(Counts)
 
 class TestRelaxNodes : public QObject {
     Q_OBJECT
 private slots:
+    void relaxTheCentreOfAnOctahedron_data() {
+        QTest::addColumn<Vec3>("centre");
+        QTest::addColumn<bool>("copy");
+        QTest::addColumn<std::vector<int>>("cutSurface");
+        QTest::addColumn<std::vector<int>>("fixedNodes");
+        QTest::addColumn<int>("steps");
+        QTest::addColumn<bool>("moves");
+        QTest::addColumn<Counts>("counts");  ///< movable, on the sweep, fixed
+        const Vec3 inPlane(0.3, 0.1, 0), offPlane(0.3, 0.1, 0.2);
+        QTest::newRow("on the cut: moves within the sweep")
+            << inPlane << false << std::vector<int>{6} << std::vector<int>{} << 10 << true << Counts{0, 1, 6};
+        // The cut touches the surface at node 2 (fixed, as the cutter fixes cut nodes on the
+        // surface); the centre is interior and not on the cut.
+        QTest::newRow("interior: moves freely")
+            << offPlane << false << std::vector<int>{2} << std::vector<int>{2} << 10 << true << Counts{1, 0, 6};
+        QTest::newRow("copies move together")
+            << inPlane << true << std::vector<int>{6, 7} << std::vector<int>{} << 10 << true << Counts{0, 1, 6};
+        QTest::newRow("fixed: stays")
+            << inPlane << false << std::vector<int>{6} << std::vector<int>{6} << 10 << false << Counts{0, 0, 7};
+        QTest::newRow("in equilibrium: stays")
+            << Vec3(0, 0, 0) << false << std::vector<int>{6} << std::vector<int>{} << 10 << false << Counts{0, 1, 6};
+        QTest::newRow("no steps") << inPlane << false << std::vector<int>{6} << std::vector<int>{} << 0 << false
+                                  << Counts{0, 0, 0};
+    }
+    void relaxTheCentreOfAnOctahedron() {
+        QFETCH(Vec3, centre);
+        QFETCH(bool, copy);
+        QFETCH(std::vector<int>, cutSurface);
+        QFETCH(std::vector<int>, fixedNodes);
+        QFETCH(int, steps);
+        QFETCH(bool, moves);
+        QFETCH(Counts, counts);
+        TetMesh mesh = octahedron(centre, copy);
+        for (int t = 0; t < mesh.tetCount(); ++t)
+            QVERIFY(mesh.referenceVolume(t) > 0);
+        const TetMesh before = mesh;
+        const SweepSurface sweep = planeZ0(-5, 5, -5, 5);
+        CutChanges changes;
+        changes.cutSurfaceNodes = cutSurface;
+        if (copy)
+            changes.duplicatedNodes = {{6, 7}};
+        RelaxOptions options;
+        options.steps = steps;
+        const RelaxResult r = relaxNodes(mesh, sweep, changes, fixedNodes, options);
+
+        QCOMPARE(r.movable, counts[0]);
+        QCOMPARE(r.onSweep, counts[1]);
+        QCOMPARE(r.fixed, counts[2]);
+        QCOMPARE(r.acceptedMoves > 0, moves);
+        const std::vector<int> movedNodes = !moves ? std::vector<int>{} : copy ? std::vector<int>{6, 7} : std::vector<int>{6};
+        QCOMPARE(r.movedNodes, movedNodes);
+        // The corners are on the boundary: they never move.
+        for (int v = 0; v < 6; ++v) {
+            QCOMPARE(mesh.pos(v), before.pos(v));
+            QCOMPARE(mesh.ref(v), before.ref(v));
+        }
+        const Vec3 moved = mesh.pos(6);
+        if (!moves) {
+            QCOMPARE(moved, centre);
+        } else {
+            // Towards the symmetric position (the equilibrium of equal springs), the reference
+            // position following (the configurations coincide here).
+            QVERIFY2(moved.norm() < centre.norm(), qPrintable(QString("%1 -> %2").arg(centre.norm()).arg(moved.norm())));
+            QVERIFY((mesh.ref(6) - moved).norm() <= 1e-15);
+            if (counts[1] > 0)  // projected onto the plane z = 0: exactly in it
+                QVERIFY2(moved.z() == 0, qPrintable(QString::number(moved.z(), 'g', 17)));
+            else
+                QVERIFY(moved.z() != centre.z());  // free to leave its plane
+        }
+        if (copy) {
+            QCOMPARE(mesh.pos(7), mesh.pos(6));
+            QCOMPARE(mesh.ref(7), mesh.ref(6));
+        }
+        // Volume kept; every tet positive; the smallest radius ratio does not drop.
+        QVERIFY(std::abs(mesh.totalReferenceVolume() - 4.0 / 3.0) <= 1e-15);
+        for (int t = 0; t < mesh.tetCount(); ++t) {
+            const Tet& q = mesh.tet(t);
+            QVERIFY(orient3d(mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3])) > 0);
+        }
+        QVERIFY(summarizeQuality(mesh).minRadiusRatio >= summarizeQuality(before).minRadiusRatio);
+    }
+
     void relaxationProperties_data() {
         QTest::addColumn<double>("scale");
         QTest::addColumn<unsigned>("seed");
@@ -129,15 +237,6 @@ private slots:
         computeLumpedMasses(reference, Material{}.density);
         for (int n = 0; n < mesh.nodeCount(); ++n)
             QVERIFY(std::abs(mesh.masses()[n] - reference.masses()[n]) <= 1e-12 * total);
-    }
-
-    void stiffnessesFollowEq4() {
-        TetMesh m = TetMesh::fromArrays({Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}, {{0, 1, 2, 3}});
-        computeLumpedMasses(m, 3.0);  // V0 = 1/3, each node 3 * (1/3) / 4 = 0.25
-        Material mat;
-        mat.stiffness = 5.0;
-        QVERIFY(std::abs(springStiffness(m, 0, 1, mat) - 5.0 * 0.5 / 4.0) < 1e-12);    // l0 = 2
-        QVERIFY(std::abs(volumeStiffness(m, 0, mat) - 5.0 * 1.0 / (1.0 / 9.0)) < 1e-9);  // V0 = 1/3
     }
 };
 
