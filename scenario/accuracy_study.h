@@ -100,9 +100,9 @@ struct StudyRow {
     double minRadiusRatio = 0;    ///< 3 r_in / R_circ over the whole mesh after the cut
     double stableDt = 0;          ///< s: the simulated model's stable explicit step (deformation
                                   ///< effect: springs, volume and area terms)
-    double cutMs = 0;             ///< median of repeats: HybridCutter::cut (CutStats::timeMs.total)
+    double cutMs = 0;             ///< median of repeats: the tet cut of Tissue::cut (CutStats::timeMs.total)
     double cutMsMin = 0;
-    double surfaceMs = 0;         ///< median: EmbeddedSurface::cut (re-bind, surface cut, bind new)
+    double surfaceMs = 0;         ///< median: the surface stages of Tissue::cut (update, cut, re-bind, bind new)
     double totalMs = 0;           ///< median of cut + surface per repeat
     int surfaceTriangles = 0;     ///< embedded surface before the cut
     double simMsPerStep = 0;      ///< median wall time of one explicit step

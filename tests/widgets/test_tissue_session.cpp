@@ -15,6 +15,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cstring>
+#include <span>
+
 using namespace resect;
 using resect::test::planeSweep;
 using resect::test::tissueDifference;
@@ -147,6 +150,29 @@ private slots:
         QVERIFY(session.waitForIdle(kWaitMs));
         QCOMPARE(session.current()->applied.options.d, 0.2);
         QCOMPARE(tissueDifference(session.current()->tissue, current->tissue), QString());
+
+        // And through replay itself (`resect run`), with nothing simulated between the cuts:
+        // the same mesh and surface, bit for bit.
+        Scenario still = doc.scenario();
+        still.effects.clear();
+        still.simulation.duration = 0;
+        ReplayPlan stillPlan;
+        QVERIFY(planTissue(still, still.tissues.front(), stillPlan).ok());
+        ReplayOutcome out;
+        const Status replayed = replay(std::move(stillPlan), out);
+        QVERIFY2(replayed.ok(), replayed.message().c_str());
+        const TetMesh& studio = session.current()->mesh();
+        const auto same = [](auto a, auto b) {
+            return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
+        };
+        QCOMPARE(out.mesh.tetCount(), studio.tetCount());
+        QVERIFY(same(out.mesh.positions(), studio.positions()));
+        QVERIFY(same(out.mesh.referencePositions(), studio.referencePositions()));
+        QVERIFY(same(out.mesh.masses(), studio.masses()));
+        QVERIFY(out.mesh.tets() == studio.tets());
+        const TriangleSurface& surface = session.current()->tissue.surface().surface();
+        QVERIFY(same(std::span<const Vec3>(out.surface.positions), std::span<const Vec3>(surface.positions)));
+        QVERIFY(out.surface.triangles == surface.triangles);
     }
 
     void addUndoRedoACut() {
