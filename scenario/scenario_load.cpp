@@ -673,13 +673,13 @@ void readCutSettings(Context& c, const QJsonValue& v, CutSettings& out) {
         triangulation == "enhanced" ? FaceTriangulation::Enhanced : FaceTriangulation::Standard;
     out.snap = hybrid;
     out.relaxSteps = hybrid ? 10 : 0;
-    f.number("d", out.d, {0, 0.5});
+    f.number("d", out.d, {0, CutLimits::kMaxD});
     f.boolean("snap", out.snap);
-    f.integer("relax_steps", out.relaxSteps, 0, 10000);
-    f.number("w_spring", out.wSpring, {0, 1e6});
-    f.number("w_particle", out.wParticle, {0, 1e6});
-    f.number("damping", out.damping, {0, 1e6, true});
-    f.integer("rings", out.rings, 1, 10);
+    f.integer("relax_steps", out.relaxSteps, 0, CutLimits::kMaxRelaxSteps);
+    f.number("w_spring", out.wSpring, {0, CutLimits::kMaxRelaxWeight});
+    f.number("w_particle", out.wParticle, {0, CutLimits::kMaxRelaxWeight});
+    f.number("damping", out.damping, {0, CutLimits::kMaxRelaxDamping, true});
+    f.integer("rings", out.rings, 1, CutLimits::kMaxRelaxRings);
     out.extra = f.unknown();
 }
 

@@ -56,7 +56,7 @@ CutPanel::CutPanel(ScenarioDocument& document, TissueSession& session, CutPrevie
     m_triangulation->addItem(tr("Enhanced (symmetric)"), int(FaceTriangulation::Enhanced));
     m_triangulation->addItem(tr("Standard"), int(FaceTriangulation::Standard));
     form->addRow(tr("Face triangulation"), m_triangulation);
-    m_d = numberBox(QStringLiteral("d"), 0.0, 0.5, 0.01, 3);
+    m_d = numberBox(QStringLiteral("d"), 0.0, CutLimits::kMaxD, 0.01, 3);
     m_d->setToolTip(tr("Cut-node threshold d as a fraction of the mean edge length (the paper: 0.2)"));
     form->addRow(tr("Threshold d"), m_d);
     m_snap = new QCheckBox(tr("Snap cut nodes onto the sweep"));
@@ -64,18 +64,18 @@ CutPanel::CutPanel(ScenarioDocument& document, TissueSession& session, CutPrevie
     form->addRow(QString(), m_snap);
     m_relaxSteps = new QSpinBox;
     m_relaxSteps->setObjectName(QStringLiteral("relaxSteps"));
-    m_relaxSteps->setRange(0, 10000);
+    m_relaxSteps->setRange(0, CutLimits::kMaxRelaxSteps);
     m_relaxSteps->setKeyboardTracking(false);
     form->addRow(tr("Relaxation steps"), m_relaxSteps);
-    m_wSpring = numberBox(QStringLiteral("wSpring"), 0.0, 1e6, 0.1, 3);
+    m_wSpring = numberBox(QStringLiteral("wSpring"), 0.0, CutLimits::kMaxRelaxWeight, 0.1, 3);
     form->addRow(tr("Spring weight"), m_wSpring);
-    m_wParticle = numberBox(QStringLiteral("wParticle"), 0.0, 1e6, 0.05, 3);
+    m_wParticle = numberBox(QStringLiteral("wParticle"), 0.0, CutLimits::kMaxRelaxWeight, 0.05, 3);
     form->addRow(tr("Particle weight"), m_wParticle);
-    m_relaxDamping = numberBox(QStringLiteral("relaxDamping"), 0.001, 1e6, 1.0, 3);
+    m_relaxDamping = numberBox(QStringLiteral("relaxDamping"), 0.001, CutLimits::kMaxRelaxDamping, 1.0, 3);
     form->addRow(tr("Relaxation damping"), m_relaxDamping);
     m_rings = new QSpinBox;
     m_rings->setObjectName(QStringLiteral("rings"));
-    m_rings->setRange(1, 10);
+    m_rings->setRange(1, CutLimits::kMaxRelaxRings);
     form->addRow(tr("Relaxation rings"), m_rings);
     layout->addWidget(settings);
 

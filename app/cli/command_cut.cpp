@@ -40,7 +40,7 @@ int runCut(Args args) {
         badInput("--triangulation: expected enhanced or standard, got '" + triangulation + "'");
     if (options.method == CutMethod::Subdivision && options.triangulation == FaceTriangulation::Enhanced)
         badInput("--triangulation enhanced applies to the hybrid method only");
-    if (auto d = args.number("--d", 0.0, 0.5))
+    if (auto d = args.number("--d", 0.0, CutLimits::kMaxD))
         options.d = *d;
     const bool snap = args.flag("--snap"), noSnap = args.flag("--no-snap");
     if (snap && noSnap)
@@ -49,9 +49,9 @@ int runCut(Args args) {
     // relaxation steps; the subdivision baseline stays plain.
     const bool hybrid = options.method == CutMethod::Hybrid;
     options.snap = hybrid ? !noSnap : snap;
-    options.relaxSteps = args.integer("--relax-steps", 0, 10000).value_or(hybrid ? 10 : 0);
-    options.wSpring = args.number("--w-spring", 0.0, 1e6).value_or(options.wSpring);
-    options.wParticle = args.number("--w-particle", 0.0, 1e6).value_or(options.wParticle);
+    options.relaxSteps = args.integer("--relax-steps", 0, CutLimits::kMaxRelaxSteps).value_or(hybrid ? 10 : 0);
+    options.wSpring = args.number("--w-spring", 0.0, CutLimits::kMaxRelaxWeight).value_or(options.wSpring);
+    options.wParticle = args.number("--w-particle", 0.0, CutLimits::kMaxRelaxWeight).value_or(options.wParticle);
     const auto surfaceIn = args.option("--surface");
     const auto surfaceOut = args.option("--surface-out");
     if (surfaceIn.has_value() != surfaceOut.has_value())

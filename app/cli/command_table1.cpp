@@ -15,7 +15,7 @@ int runTable1(Args args) {
     std::vector<std::string> samples = args.options("--sample");
     if (samples.empty())
         samples = {"polyp", "myoma"};
-    const double d = args.number("--d", 0.0, 0.5).value_or(0.2);
+    const double d = args.number("--d", 0.0, CutLimits::kMaxD).value_or(0.2);
     const auto out = args.option("--out");
     args.finish();
 

@@ -215,15 +215,16 @@ Status validateCutOptions(const CutOptions& o) {
         return Status::error(range("minEdgeFraction", 0, CutLimits::kMaxMinEdgeFraction, o.minEdgeFraction, true));
     if (!(o.snapQualityFloor >= 0) || o.snapQualityFloor > 1)
         return Status::error(range("snapQualityFloor", 0, 1, o.snapQualityFloor));
-    if (o.relaxSteps < 0)
-        return Status::error("relaxation steps must be >= 0, got " + std::to_string(o.relaxSteps));
+    if (o.relaxSteps < 0 || o.relaxSteps > CutLimits::kMaxRelaxSteps)
+        return Status::error(range("relaxation steps", 0, CutLimits::kMaxRelaxSteps, o.relaxSteps));
     if (o.relaxRings < 1 || o.relaxRings > CutLimits::kMaxRelaxRings)
         return Status::error(range("relaxation rings", 1, CutLimits::kMaxRelaxRings, o.relaxRings));
-    if (!(o.relaxDamping > 0) || !std::isfinite(o.relaxDamping))
-        return Status::error("relaxation damping must be > 0, got " + formatNumber(o.relaxDamping));
-    if (!(o.wSpring >= 0) || !(o.wParticle >= 0) || !std::isfinite(o.wSpring) || !std::isfinite(o.wParticle))
-        return Status::error("relaxation weights must be >= 0, got w_spring " + formatNumber(o.wSpring) +
-                             " and w_particle " + formatNumber(o.wParticle));
+    if (!(o.relaxDamping > 0) || o.relaxDamping > CutLimits::kMaxRelaxDamping)
+        return Status::error(range("relaxation damping", 0, CutLimits::kMaxRelaxDamping, o.relaxDamping, true));
+    if (!(o.wSpring >= 0) || o.wSpring > CutLimits::kMaxRelaxWeight)
+        return Status::error(range("w_spring", 0, CutLimits::kMaxRelaxWeight, o.wSpring));
+    if (!(o.wParticle >= 0) || o.wParticle > CutLimits::kMaxRelaxWeight)
+        return Status::error(range("w_particle", 0, CutLimits::kMaxRelaxWeight, o.wParticle));
     if (!(o.density > 0) || !std::isfinite(o.density))
         return Status::error("density must be > 0, got " + formatNumber(o.density));
     return Status::success();

@@ -20,10 +20,14 @@ enum class FaceTriangulation { Standard, Enhanced };
 
 /// Accepted ranges of the CutOptions fields (validateCutOptions checks them; its messages
 /// print these constants).
+/// The CLI, the scenario reader and the studio's editors take their ranges from here too.
 struct CutLimits {
     static constexpr double kMaxD = 0.5;                  ///< d in [0, kMaxD] mean edge lengths
     static constexpr double kMaxFaceNodeAdvantage = 100;  ///< faceNodeAdvantage in [0, this]
     static constexpr double kMaxMinEdgeFraction = 0.01;   ///< minEdgeFraction in (0, this]
+    static constexpr int kMaxRelaxSteps = 10000;          ///< relaxSteps in [0, this]
+    static constexpr double kMaxRelaxWeight = 1e6;        ///< wSpring, wParticle in [0, this]
+    static constexpr double kMaxRelaxDamping = 1e6;       ///< relaxDamping in (0, this]
     static constexpr int kMaxRelaxRings = 5;              ///< relaxRings in [1, this]
 };
 

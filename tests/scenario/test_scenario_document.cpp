@@ -418,6 +418,9 @@ void TestScenarioDocument::validationErrors_data() {
     row("relax steps fraction", "cut_settings.relax_steps", "2.5", "cut_settings.relax_steps",
         "integer");
     row("relax damping zero", "cut_settings.damping", "0", "cut_settings.damping", "out of range");
+    // The reader's ranges are the cutter's (CutLimits): a value it accepts never fails a cut.
+    row("rings above the cutter's limit", "cut_settings.rings",
+        QByteArray::number(CutLimits::kMaxRelaxRings + 1).constData(), "cut_settings.rings", "out of range");
     row("rings huge", "cut_settings.rings", "1000", "cut_settings.rings", "out of range");
     row("effect unknown", "effects[0].name", "\"magnetism\"", "effects[0].name", "unknown value");
     row("effect twice", "effects[1].name", "\"deformation\"", "effects[1].name", "twice");
