@@ -1,10 +1,13 @@
 #include "core/embed/cut_surface.h"
 
 #include "core/embed/triangulate_cut.h"
+#include "core/mesh/predicates.h"
 #include "core/mesh/union_find.h"
 #include "core/sweep/intersect_segment.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -14,7 +17,7 @@
 namespace resect {
 namespace {
 
-std::uint64_t key(int a, int b) {
+std::uint64_t undirected(int a, int b) {
     if (a > b)
         std::swap(a, b);
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
@@ -23,59 +26,176 @@ std::uint64_t directed(int a, int b) {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
 }
 
-struct Crossing {
-    SegmentHit hit;  ///< relative to the direction low -> high vertex index
-    int low = -1, high = -1;
-    bool shared = false;
-    int plus = -1, minus = -1;  ///< the copies on the + and - side (equal if shared)
-    int copyFor(int side) const { return side > 0 ? plus : minus; }
-};
-
-} // namespace
-
-namespace {
-
-/// Triangles that can touch the sweep: not all three corners strictly beyond one face of the
-/// sweep's bounding box (exact comparisons, so no crossing is missed). One pass over the
-/// index array, a few nanoseconds a triangle; everything after it costs in proportion to the
-/// triangles the sweep touches.
-std::vector<int> candidateTriangles(const TriangleSurface& surface, const SweepSurface& sweep) {
-    const Vec3 lo = sweep.bounds().min(), hi = sweep.bounds().max();
-    // Outcodes of the vertices first (a streaming pass; the byte array stays in cache for
-    // the triangle pass that follows).
-    std::vector<std::uint8_t> code(surface.positions.size());
-    for (std::size_t v = 0; v < code.size(); ++v) {
-        const Vec3& p = surface.positions[v];
-        code[v] = static_cast<std::uint8_t>((p.x() < lo.x() ? 1 : 0) | (p.x() > hi.x() ? 2 : 0) | (p.y() < lo.y() ? 4 : 0) |
-                                            (p.y() > hi.y() ? 8 : 0) | (p.z() < lo.z() ? 16 : 0) | (p.z() > hi.z() ? 32 : 0));
-    }
-    std::vector<int> out;
-    const int n = surface.triangleCount();
-    for (int t = 0; t < n; ++t) {
-        const Tri& q = surface.triangles[t];
-        if ((code[q[0]] & code[q[1]] & code[q[2]]) == 0)
-            out.push_back(t);
-    }
-    return out;
+/// Canonical order of two surface vertices: by position (lexicographic), then by index. Every
+/// computation on an edge or a triangle runs in this order, so coincident edges and triangles
+/// of different pieces (the two faces of an earlier cut) give bit-identical crossings.
+bool precedes(const Vec3& p, int i, const Vec3& q, int j) {
+    if (p.x() != q.x())
+        return p.x() < q.x();
+    if (p.y() != q.y())
+        return p.y() < q.y();
+    if (p.z() != q.z())
+        return p.z() < q.z();
+    return i < j;
 }
 
-/// Undo log of an in-place surface edit: appended data is truncated, replaced triangles are
-/// restored. Keeps the promise that a failed cut leaves the surface untouched.
+/// A crossing of a surface edge with the sweep: the edge is split there. Every crossing
+/// splits (not only odd numbers of them, as for the tets): an edge crossed twice by a curved
+/// sweep leaves the cut and comes back, and the surface follows that exactly.
+struct EdgeSplit {
+    int low = -1, high = -1;  ///< the edge's ends, low < high
+    double t = 0;             ///< crossing parameter from low to high
+    Vec3 point = Vec3::Zero();
+    Vec2 uv = Vec2::Zero();
+    int sideLow = 0;          ///< side of `low` relative to the crossed sweep triangle
+    int sweepTriangle = -1;
+    std::int64_t feature = 0; ///< the sweep feature crossed (intersect_segment.h)
+    int vertex = -1;          ///< the split point (a new vertex)
+    int sideOf(int v) const { return v == low ? sideLow : -sideLow; }
+};
+
+/// A point the cut passes through on a surface triangle's boundary: a split point, or a
+/// surface vertex that lies exactly on the sweep.
+struct BoundaryPoint {
+    int vertex = -1;
+    std::vector<int> sweepTriangles;  ///< the sweep triangles whose closed triangle holds it
+};
+
+/// A point where a sweep edge pierces a surface triangle's interior, found while tracing.
+struct Pierce {
+    Vec3 point = Vec3::Zero();
+    Vec2 uv = Vec2::Zero();
+};
+
+/// Points of a cut closer than this fraction of their surface triangle's longest edge count as
+/// one (dimensionless; 1e-9 is far above rounding and far below any feature of a mesh).
+constexpr double kCoincidentFraction = 1e-9;
+
+/// A crossing closer than this fraction of its edge's length to an end of the edge puts the cut
+/// through that end (dimensionless; far above rounding, far below any feature of a mesh).
+constexpr double kSnapFraction = 1e-7;
+
+/// A piece's side is probed this fraction of the cut segment's length inside it: far above the
+/// rounding of the segment's points, far below the size of a piece.
+constexpr double kProbeFraction = 1e-6;
+
+/// A surface triangle whose area is below this fraction of its longest edge squared counts as
+/// flat (its plane is not defined to within rounding of a probe's offset).
+constexpr double kFlatRatio = 1e-8;
+
+/// Triangle (vertex ids) with a quality for choosing ears: area over the sum of squared edges.
+double earQuality(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const double edges = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
+    return edges > 0 ? (b - a).cross(c - a).norm() / edges : 0.0;
+}
+
+/// Ear clipping of a simple polygon (vertex ids, oriented as `sign` says in the projection
+/// that drops axis `drop`) with exact orientation tests. Among the valid ears the best shaped
+/// is cut first, so the split points on an edge never make a needle. Unless
+/// `allowCutDiagonals`, no diagonal may join two points of the cut (`onCut`): such an edge
+/// could also be made by the cap on the other side of the cut, and the surface would pinch
+/// there; when only such ears are left, the rest of the polygon is returned in `stuck` (empty
+/// when done). False if no ear exists at all (a polygon that is not simple).
+template <class OnCut>
+bool earClip(std::vector<int> poly, const std::vector<Vec3>& P, int drop, int sign, const OnCut& onCut,
+             bool allowCutDiagonals, std::vector<Tri>& out, std::vector<int>& stuck) {
+    stuck.clear();
+    while (poly.size() > 3) {
+        const int n = static_cast<int>(poly.size());
+        int best = -1;
+        double bestQuality = -std::numeric_limits<double>::infinity();
+        // Passes: convex empty ears, flat empty ears, and (when diagonals between cut points
+        // are allowed) the best-shaped ear of any kind, so that clipping always finishes: any
+        // sequence of ears triangulates the polygon as a disc.
+        const int passes = allowCutDiagonals ? 3 : 2;
+        for (int pass = 0; pass < passes && best < 0; ++pass) {
+            for (int i = 0; i < n; ++i) {
+                const int a = poly[(i + n - 1) % n], b = poly[i], c = poly[(i + 1) % n];
+                if (a == c)
+                    continue;
+                const int o = orient2dProjected(P[a], P[b], P[c], drop) * sign;
+                if ((pass == 0 && o <= 0) || (pass == 1 && o < 0))
+                    continue;
+                if (!allowCutDiagonals && onCut(a) && onCut(c))
+                    continue;
+                bool ok = true;
+                for (int j = 0; j < n && ok && pass < 2; ++j) {
+                    const int x = poly[j];
+                    if (x == a || x == b || x == c || P[x] == P[a] || P[x] == P[b] || P[x] == P[c])
+                        continue;
+                    const int s1 = orient2dProjected(P[a], P[b], P[x], drop) * sign;
+                    const int s2 = orient2dProjected(P[b], P[c], P[x], drop) * sign;
+                    const int s3 = orient2dProjected(P[c], P[a], P[x], drop) * sign;
+                    ok = !(s1 >= 0 && s2 >= 0 && s3 >= 0);
+                }
+                if (!ok)
+                    continue;
+                const double q = earQuality(P[a], P[b], P[c]) * (o >= 0 ? 1 : -1);
+                if (q > bestQuality) {
+                    bestQuality = q;
+                    best = i;
+                }
+            }
+        }
+        if (best < 0) {
+            if (allowCutDiagonals)
+                return false;
+            stuck = poly;
+            return true;
+        }
+        out.push_back({poly[(best + n - 1) % n], poly[best], poly[(best + 1) % n]});
+        poly.erase(poly.begin() + best);
+    }
+    if (poly.size() == 3) {
+        if (!allowCutDiagonals && onCut(poly[0]) && onCut(poly[1]) && onCut(poly[2])) {
+            stuck = poly;  // a triangle of cut points only: its edges would pinch too
+            return true;
+        }
+        out.push_back({poly[0], poly[1], poly[2]});
+    }
+    return true;
+}
+
+/// True if every triangle (s, poly[i], poly[i+1]) is strictly positively oriented: s sees the
+/// whole polygon (it lies in its kernel) and a fan from it triangulates it.
+bool fansFrom(const Vec3& s, const std::vector<int>& poly, const std::vector<Vec3>& P, int drop, int sign) {
+    for (std::size_t i = 0; i < poly.size(); ++i)
+        if (orient2dProjected(s, P[poly[i]], P[poly[(i + 1) % poly.size()]], drop) * sign <= 0)
+            return false;
+    return true;
+}
+
+/// Undo log of an in-place surface edit: appended data is truncated, replaced triangles and
+/// changed cut (u, v)s are restored. Keeps the promise that a failed cut leaves the surface
+/// untouched.
 struct SurfaceEdit {
     TriangleSurface& surface;
     std::vector<Vec3>* rest;
     int vertices, triangles;
     std::size_t cutUvs, cutFaces;  ///< sizes before (the arrays may have been empty)
     std::vector<std::pair<int, Tri>> replaced;
+    std::vector<std::pair<int, Vec2>> uvChanged;
     bool committed = false;
     SurfaceEdit(TriangleSurface& s, std::vector<Vec3>* r)
         : surface(s), rest(r), vertices(s.vertexCount()), triangles(s.triangleCount()), cutUvs(s.cutUvs.size()),
           cutFaces(s.cutFaces.size()) {}
+    SurfaceEdit(const SurfaceEdit&) = delete;
+    SurfaceEdit& operator=(const SurfaceEdit&) = delete;
+    void replace(int t, const Tri& q) {
+        replaced.emplace_back(t, surface.triangles[t]);
+        surface.triangles[t] = q;
+    }
+    void setCutUv(int v, const Vec2& uv) {
+        uvChanged.emplace_back(v, surface.cutUvs[v]);
+        surface.cutUvs[v] = uv;
+    }
     ~SurfaceEdit() {
         if (committed)
             return;
         for (auto it = replaced.rbegin(); it != replaced.rend(); ++it)
             surface.triangles[it->first] = it->second;
+        for (auto it = uvChanged.rbegin(); it != uvChanged.rend(); ++it)
+            surface.cutUvs[it->first] = it->second;
         surface.positions.resize(vertices);
         if (!surface.uvs.empty())
             surface.uvs.resize(vertices);
@@ -87,6 +207,1248 @@ struct SurfaceEdit {
     }
 };
 
+/// The surface cut of section 5, one step per member function: candidates, edge splits,
+/// triangle splits (with the exact course of the cut inside each triangle), separation of the
+/// sides, boundary tracing, caps.
+class SurfaceCutter {
+public:
+    SurfaceCutter(TriangleSurface& surface, std::vector<Vec3>* rest, const SweepSurface& sweep, SurfaceCut& out)
+        : m_s(surface), m_rest(rest), m_sweep(sweep), m_out(out), m_edit(surface, rest),
+          m_first(surface.vertexCount()) {}
+
+    Status run() {
+        findCandidates();
+        findEdgeSplits();
+        if (m_splits.empty())
+            return Status::success();  // nothing crosses: the surface is unchanged
+        buildSweepAdjacency();
+        prepareArrays();
+        addSplitVertices();
+        if (Status s = splitTriangles(); !s.ok())
+            return s;
+        collectTouched();
+        assignSides();
+        separateSides();
+        std::vector<std::vector<int>> loops;
+        if (Status s = traceBoundary(loops); !s.ok())
+            return s;
+        if (Status s = closeCaps(loops); !s.ok())
+            return s;
+        finishCounts();
+        m_edit.committed = true;
+        return Status::success();
+    }
+
+private:
+    // --- step 1: triangles near the sweep ---
+
+    /// Triangles that can touch the sweep: not all three corners strictly beyond one face of
+    /// the sweep's bounding box (exact comparisons, so no crossing is missed). One pass over
+    /// the index array, a few nanoseconds a triangle; everything after it costs in proportion
+    /// to the triangles the sweep touches.
+    void findCandidates() {
+        const Vec3 lo = m_sweep.bounds().min(), hi = m_sweep.bounds().max();
+        std::vector<std::uint8_t> code(m_s.positions.size());
+        for (std::size_t v = 0; v < code.size(); ++v) {
+            const Vec3& p = m_s.positions[v];
+            code[v] = static_cast<std::uint8_t>((p.x() < lo.x() ? 1 : 0) | (p.x() > hi.x() ? 2 : 0) |
+                                                (p.y() < lo.y() ? 4 : 0) | (p.y() > hi.y() ? 8 : 0) |
+                                                (p.z() < lo.z() ? 16 : 0) | (p.z() > hi.z() ? 32 : 0));
+        }
+        for (int t = 0; t < m_s.triangleCount(); ++t) {
+            const Tri& q = m_s.triangles[t];
+            if ((code[q[0]] & code[q[1]] & code[q[2]]) == 0)
+                m_candidates.push_back(t);
+        }
+        m_out.candidateTriangles = static_cast<int>(m_candidates.size());
+    }
+
+    // --- step 2: crossed edges and vertices on the sweep ---
+
+    /// Every crossing of every candidate edge, in two passes. A crossing within kSnapFraction of
+    /// an edge's length from one of its ends puts the cut through that end instead (the vertex
+    /// counts as on the sweep, as do vertices exactly on it); then every edge at such a vertex
+    /// drops its crossings near it. Without this a sweep passing within rounding of a vertex
+    /// (a cut through an earlier cut vertex) would leave pieces too small to tell apart.
+    void findEdgeSplits() {
+        struct EdgeHits {
+            int a, b;  ///< the edge, from -> to in canonical order
+            std::vector<SegmentHit> hits;
+        };
+        std::vector<EdgeHits> edges;
+        std::unordered_set<std::uint64_t> tested;
+        SegmentQuery query;
+        std::vector<int> scratch;
+        const auto& P = m_s.positions;
+        for (int t : m_candidates) {
+            const Tri& q = m_s.triangles[t];
+            for (int e = 0; e < 3; ++e) {
+                const int a = q[e], b = q[(e + 1) % 3];
+                if (!tested.insert(undirected(a, b)).second)
+                    continue;
+                const bool forward = precedes(P[a], a, P[b], b);
+                const int from = forward ? a : b, to = forward ? b : a;
+                intersectSegment(m_sweep, P[from], P[to], query, scratch);
+                if (query.pOnSweep)
+                    m_onSweep.insert(from);
+                if (query.qOnSweep)
+                    m_onSweep.insert(to);
+                if (query.hits.empty())
+                    continue;
+                for (const SegmentHit& h : query.hits) {
+                    // A crossing all but at an end: that end is on the cut.
+                    const int end = h.t < kSnapFraction ? from : h.t > 1 - kSnapFraction ? to : -1;
+                    if (end >= 0 && m_onSweep.insert(end).second)
+                        m_holding[end] = trianglesOfFeature(h.triangle, h.feature);
+                }
+                edges.push_back({from, to, query.hits});
+            }
+        }
+        for (const EdgeHits& edge : edges) {
+            const int from = edge.a, to = edge.b;
+            const bool fromOn = m_onSweep.count(from) > 0, toOn = m_onSweep.count(to) > 0;
+            std::vector<EdgeSplit> splits;
+            for (const SegmentHit& h : edge.hits) {
+                if ((fromOn && h.t < kSnapFraction) || (toOn && h.t > 1 - kSnapFraction))
+                    continue;
+                EdgeSplit s;
+                s.low = std::min(from, to);
+                s.high = std::max(from, to);
+                const bool fromLow = from == s.low;
+                s.t = fromLow ? h.t : 1.0 - h.t;
+                s.point = h.point;
+                s.uv = h.uv;
+                s.sideLow = fromLow ? h.sideP : -h.sideP;
+                s.sweepTriangle = h.triangle;
+                s.feature = h.feature;
+                // Two crossings within rounding of each other are a tangency: neither splits.
+                if (!splits.empty() && std::abs(s.t - splits.back().t) <= kSnapFraction) {
+                    splits.pop_back();
+                    continue;
+                }
+                splits.push_back(s);
+            }
+            std::sort(splits.begin(), splits.end(), [](const EdgeSplit& x, const EdgeSplit& y) { return x.t < y.t; });
+            if (!splits.empty())
+                m_splits.emplace(undirected(from, to), std::move(splits));
+        }
+    }
+
+    /// The crossings of edge (a, b), ordered from low to high (empty if none).
+    std::vector<EdgeSplit>* splitsOf(int a, int b) {
+        auto it = m_splits.find(undirected(a, b));
+        return it == m_splits.end() ? nullptr : &it->second;
+    }
+
+    // --- sweep topology, for tracing the cut inside a triangle ---
+
+    void buildSweepAdjacency() {
+        const auto& T = m_sweep.triangles();
+        std::unordered_map<std::uint64_t, std::array<int, 2>> edgeTriangles;
+        for (int t = 0; t < static_cast<int>(T.size()); ++t)
+            for (int e = 0; e < 3; ++e) {
+                auto [it, added] = edgeTriangles.emplace(undirected(T[t][e], T[t][(e + 1) % 3]), std::array<int, 2>{t, -1});
+                if (!added)
+                    it->second[1] = t;
+            }
+        m_neighbour.assign(T.size(), {-1, -1, -1});
+        for (int t = 0; t < static_cast<int>(T.size()); ++t)
+            for (int e = 0; e < 3; ++e) {
+                const auto& pair = edgeTriangles.at(undirected(T[t][e], T[t][(e + 1) % 3]));
+                m_neighbour[t][e] = pair[0] == t ? pair[1] : pair[0];
+            }
+        m_vertexTriangles.assign(m_sweep.vertices().size(), {});
+        for (int t = 0; t < static_cast<int>(T.size()); ++t)
+            for (int v : T[t])
+                m_vertexTriangles[v].push_back(t);
+    }
+
+    /// The sweep triangles a crossing lies in: its triangle, and every triangle sharing the
+    /// crossed edge or vertex.
+    std::vector<int> trianglesOfFeature(int triangle, std::int64_t feature) const {
+        std::vector<int> out{triangle};
+        const int kind = static_cast<int>(feature & 3);
+        const std::int64_t body = feature >> 2;
+        if (kind == 1) {
+            const int a = static_cast<int>(body >> 31), b = static_cast<int>(body & 0x7fffffff);
+            for (int t : m_vertexTriangles[a]) {
+                const Tri& q = m_sweep.triangles()[t];
+                if (t != triangle && std::find(q.begin(), q.end(), b) != q.end())
+                    out.push_back(t);
+            }
+        } else if (kind == 2) {
+            for (int t : m_vertexTriangles[static_cast<int>(body)])
+                if (t != triangle)
+                    out.push_back(t);
+        }
+        return out;
+    }
+
+    /// The sweep triangles whose closed triangle holds the point (exactly).
+    std::vector<int> trianglesHolding(const Vec3& p) const {
+        std::vector<int> near, out;
+        m_sweep.trianglesOverlapping(Box3(p, p), near);
+        const auto& V = m_sweep.vertices();
+        for (int t : near) {
+            if (m_sweep.isDegenerate(t))
+                continue;
+            const Tri& q = m_sweep.triangles()[t];
+            if (orient3d(V[q[0]], V[q[1]], V[q[2]], p) == 0 && inClosedTriangle(p, V[q[0]], V[q[1]], V[q[2]]))
+                out.push_back(t);
+        }
+        return out;
+    }
+
+    // --- step 3: new vertices ---
+
+    void prepareArrays() {
+        m_s.cutUvs.resize(m_s.vertexCount(), Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
+        m_s.cutFaces.resize(m_s.triangleCount(), 0);
+    }
+
+    /// Appends a vertex (position, texture coordinate and rest position interpolated with the
+    /// weights of `from`); returns its index.
+    int addVertex(const Vec3& p, const Vec2& cutUv, const std::vector<std::pair<int, double>>& from,
+                  const std::array<int, 2>& source) {
+        m_s.positions.push_back(p);
+        if (!m_s.uvs.empty()) {
+            Vec2 uv = Vec2::Zero();
+            for (const auto& [v, w] : from)
+                uv += w * m_s.uvs[v];
+            m_s.uvs.push_back(uv);
+        }
+        if (m_rest) {
+            Vec3 r = Vec3::Zero();
+            for (const auto& [v, w] : from)
+                r += w * (*m_rest)[v];
+            m_rest->push_back(r);
+        }
+        m_s.cutUvs.push_back(cutUv);
+        m_sourceEdge.push_back(source);
+        m_origin.push_back(m_s.vertexCount() - 1);
+        return m_s.vertexCount() - 1;
+    }
+
+    /// One split point per crossed edge, numbered in the order of the triangles (reproducible).
+    void addSplitVertices() {
+        for (int t : m_candidates) {
+            const Tri q = m_s.triangles[t];
+            for (int e = 0; e < 3; ++e)
+                if (std::vector<EdgeSplit>* list = splitsOf(q[e], q[(e + 1) % 3]))
+                    for (EdgeSplit& s : *list)
+                        if (s.vertex < 0)
+                            s.vertex = addVertex(s.point, s.uv, {{s.low, 1 - s.t}, {s.high, s.t}}, {s.low, s.high});
+        }
+    }
+
+    // --- step 4: split the crossed triangles along the cut ---
+
+    /// The boundary points of the cut on triangle q: split points of its crossed edges and its
+    /// corners on the sweep, in the triangle's boundary order, with that order (the cycle).
+    void boundaryOf(const Tri& q, std::vector<int>& cycle, std::vector<BoundaryPoint>& points) {
+        cycle.clear();
+        points.clear();
+        for (int e = 0; e < 3; ++e) {
+            const int a = q[e];
+            cycle.push_back(a);
+            if (m_onSweep.count(a)) {
+                auto it = m_holding.find(a);
+                if (it == m_holding.end())
+                    it = m_holding.emplace(a, trianglesHolding(m_s.positions[a])).first;
+                if (!it->second.empty())
+                    points.push_back({a, it->second});
+            }
+            if (const std::vector<EdgeSplit>* list = splitsOf(a, q[(e + 1) % 3])) {
+                // Along the edge from a: increasing t if a is its low end.
+                const bool fromLow = a == list->front().low;
+                for (std::size_t k = 0; k < list->size(); ++k) {
+                    const EdgeSplit& s = (*list)[fromLow ? k : list->size() - 1 - k];
+                    cycle.push_back(s.vertex);
+                    points.push_back({s.vertex, trianglesOfFeature(s.sweepTriangle, s.feature)});
+                }
+            }
+        }
+    }
+
+    /// Where sweep edge (p, q) (indices, canonical p < q) pierces the interior of the surface
+    /// triangle T (canonical corner order), exactly; false if it does not.
+    bool pierce(const std::array<Vec3, 3>& T, int p, int q, Pierce& out) const {
+        const auto& V = m_sweep.vertices();
+        const int sp = orient3d(T[0], T[1], T[2], V[p]), sq = orient3d(T[0], T[1], T[2], V[q]);
+        if (sp == 0 || sq == 0 || sp == sq)
+            return false;
+        const int e0 = orient3d(V[p], V[q], T[0], T[1]), e1 = orient3d(V[p], V[q], T[1], T[2]),
+                  e2 = orient3d(V[p], V[q], T[2], T[0]);
+        if (e0 == 0 || e0 != e1 || e1 != e2)
+            return false;
+        const double vp = signedVolume(T[0], T[1], T[2], V[p]), vq = signedVolume(T[0], T[1], T[2], V[q]);
+        const double t = std::clamp(vp / (vp - vq), 0.0, 1.0);
+        out.point = V[p] + t * (V[q] - V[p]);
+        out.uv = (1 - t) * m_sweep.vertexUv(p) + t * m_sweep.vertexUv(q);
+        return true;
+    }
+
+    enum class TraceEnd { Reached, Border, Failed };
+
+    /// Follows the cut T ∩ sweep from boundary point `from` across sweep triangles (through
+    /// the points where sweep edges pierce T) until it reaches another of T's boundary points
+    /// (`to` is set to its position in `points`), leaves the sweep inside T (a partial cut), or
+    /// cannot be followed (a degenerate configuration).
+    TraceEnd trace(const std::array<Vec3, 3>& T, const std::vector<BoundaryPoint>& points, std::size_t from,
+                   const std::vector<bool>& used, std::size_t& to, std::vector<Pierce>& path,
+                   std::vector<int>& segmentTriangles) const {
+        const auto& S = m_sweep.triangles();
+        const auto holds = [&](std::size_t k, int triangle) {
+            const auto& list = points[k].sweepTriangles;
+            return std::find(list.begin(), list.end(), triangle) != list.end();
+        };
+        bool border = false;
+        for (int start : points[from].sweepTriangles) {
+            path.clear();
+            segmentTriangles.clear();
+            int current = start, entry = -1;
+            for (std::size_t step = 0; step <= S.size(); ++step) {
+                segmentTriangles.push_back(current);
+                // One sweep triangle meets T in one segment: a boundary point in it ends the cut.
+                for (std::size_t k = 0; k < points.size(); ++k)
+                    if (k != from && !used[k] && holds(k, current)) {
+                        to = k;
+                        return TraceEnd::Reached;
+                    }
+                int exit = -1, exits = 0;
+                Pierce found, at;
+                for (int e = 0; e < 3; ++e) {
+                    if (e == entry)
+                        continue;
+                    const int a = S[current][e], b = S[current][(e + 1) % 3];
+                    if (pierce(T, std::min(a, b), std::max(a, b), at)) {
+                        ++exits;
+                        exit = e;
+                        found = at;
+                    }
+                }
+                if (exits != 1)
+                    break;  // the cut leaves T through its boundary here, or is degenerate
+                path.push_back(found);
+                const int next = m_neighbour[current][exit];
+                if (next < 0) {
+                    border = true;
+                    break;
+                }
+                const Tri& n = S[next];
+                const int a = S[current][exit], b = S[current][(exit + 1) % 3];
+                entry = -1;
+                for (int e = 0; e < 3; ++e)
+                    if (undirected(n[e], n[(e + 1) % 3]) == undirected(a, b))
+                        entry = e;
+                current = next;
+            }
+        }
+        path.clear();
+        segmentTriangles.clear();
+        return border ? TraceEnd::Border : TraceEnd::Failed;
+    }
+
+    /// The side of sweep triangle s on which the piece left of the cut segment a -> b lies (the
+    /// piece runs counter-clockwise about `normal`, its surface triangle's): tested at a point
+    /// just inside the piece next to the segment's middle.
+    int pieceSide(int s, const Vec3& a, const Vec3& b, const Vec3& normal) const {
+        const Vec3 along = b - a;
+        const Vec3 inward = normal.cross(along);
+        const double length = inward.norm();
+        if (!(length > 0))
+            return 0;
+        const Vec3 probe = 0.5 * (a + b) + (kProbeFraction * along.norm() / length) * inward;
+        const auto& V = m_sweep.vertices();
+        const Tri& t = m_sweep.triangles()[s];
+        return orient3d(V[t[0]], V[t[1]], V[t[2]], probe);
+    }
+
+    /// The side of original corner x of triangle q: from the crossing on one of its edges, or
+    /// (a corner next to on-sweep corners only) the side of the sweep's nearest triangle.
+    int cornerSide(const Tri& q, int x) {
+        for (int e = 0; e < 3; ++e)
+            if (q[e] == x || q[(e + 1) % 3] == x)
+                if (const std::vector<EdgeSplit>* list = splitsOf(q[e], q[(e + 1) % 3]))
+                    return (x == list->front().low ? list->front() : list->back()).sideOf(x);  // the nearest crossing
+        return m_sweep.sideOf(m_s.positions[x]);
+    }
+
+    Status splitTriangles() {
+        std::vector<int> cycle;
+        std::vector<BoundaryPoint> points;
+        for (int t : m_candidates) {
+            const Tri q = m_s.triangles[t];
+            boundaryOf(q, cycle, points);
+            if (points.empty())
+                continue;
+            bool split = false;
+            for (const BoundaryPoint& p : points)
+                split = split || p.vertex >= m_first;
+            if (!split && points.size() < 2)
+                continue;  // one corner on the sweep: the cut only touches the triangle there
+            if (Status s = splitTriangle(t, q, cycle, points); !s.ok())
+                return s;
+        }
+        return Status::success();
+    }
+
+    /// Splits triangle t (corners q, boundary `cycle` with its cut `points`) into the pieces
+    /// the cut polylines bound, and records the cut edges and each piece's side.
+    Status splitTriangle(int t, const Tri& q, const std::vector<int>& cycle, const std::vector<BoundaryPoint>& points) {
+        const auto& P = m_s.positions;
+        std::array<int, 3> order{q[0], q[1], q[2]};
+        std::sort(order.begin(), order.end(), [&](int a, int b) { return precedes(P[a], a, P[b], b); });
+        const std::array<Vec3, 3> T{P[order[0]], P[order[1]], P[order[2]]};
+
+        // The cut's polylines through this triangle, found by tracing on the sweep.
+        std::vector<std::vector<int>> polylines;
+        auto& segmentTriangle = m_segmentTriangle;  // polyline segment -> its sweep triangle
+        std::vector<bool> used(points.size(), false);
+        std::vector<Pierce> path;
+        std::vector<int> visited;
+        for (std::size_t a = 0; a < points.size(); ++a) {
+            if (used[a])
+                continue;
+            std::size_t b = 0;
+            const TraceEnd reached = trace(T, points, a, used, b, path, visited);
+            if (reached == TraceEnd::Failed && std::getenv("RESECT_DEBUG"))
+                std::fprintf(stderr, "trace failed in triangle %d from point %zu of %zu (vertex %d, %zu sweep tris)\n", t, a, points.size(), points[a].vertex, points[a].sweepTriangles.size());
+            if (reached != TraceEnd::Reached)
+                continue;
+            used[a] = used[b] = true;
+            // Pierce points all but on top of a point before them or of the end (the sweep's
+            // edge passes within rounding of the triangle's edge) are dropped: they would only
+            // make needles, and their (u, v) could not be told apart from their neighbours'.
+            const double tiny = kCoincidentFraction * std::max({(P[q[1]] - P[q[0]]).norm(), (P[q[2]] - P[q[1]]).norm(),
+                                                                 (P[q[0]] - P[q[2]]).norm()});
+            std::vector<int> line{points[a].vertex}, lineTriangles{visited.front()};
+            Vec3 last = P[points[a].vertex];
+            const Vec3 end = P[points[b].vertex];
+            for (std::size_t k = 0; k < path.size(); ++k)
+                if ((path[k].point - last).norm() > tiny && (path[k].point - end).norm() > tiny) {
+                    line.push_back(addPierceVertex(q, path[k]));
+                    lineTriangles.push_back(visited[k + 1]);
+                    last = path[k].point;
+                }
+            line.push_back(points[b].vertex);
+            for (std::size_t k = 0; k + 1 < line.size(); ++k)
+                segmentTriangle[undirected(line[k], line[k + 1])] = lineTriangles[k];
+            polylines.push_back(std::move(line));
+        }
+        // Two boundary points that could not be traced to each other (a degenerate meeting of
+        // the sweep with the triangle): the chord between them, unless one ends a partial cut.
+        if (polylines.empty() && points.size() == 2) {
+            std::size_t b = 0;
+            std::vector<bool> none(points.size(), false);
+            const bool partial = trace(T, points, 0, none, b, path, visited) == TraceEnd::Border ||
+                                 trace(T, points, 1, none, b, path, visited) == TraceEnd::Border;
+            if (!partial) {
+                polylines.push_back({points[0].vertex, points[1].vertex});
+                segmentTriangle[undirected(points[0].vertex, points[1].vertex)] = points[0].sweepTriangles.front();
+            }
+            if (std::getenv("RESECT_DEBUG")) {
+                std::fprintf(stderr, "chord in triangle %d (%d %d %d), points %d [%zu tris: %d] %d [%zu tris: %d], partial %d, len %g\n", t, q[0], q[1], q[2],
+                             points[0].vertex, points[0].sweepTriangles.size(), points[0].sweepTriangles[0], points[1].vertex, points[1].sweepTriangles.size(), points[1].sweepTriangles[0], int(partial),
+                             (P[points[0].vertex] - P[points[1].vertex]).norm());
+                std::vector<bool> none2(points.size(), false);
+                std::size_t bb = 0;
+                for (int from = 0; from < 2; ++from) {
+                    const auto& S = m_sweep.triangles();
+                    for (int start : points[from].sweepTriangles) {
+                        int cur = start;
+                        std::fprintf(stderr, "  from %d start %d:", from, start);
+                        int entry = -1;
+                        for (int step = 0; step < 50; ++step) {
+                            int exits = 0, exit = -1; Pierce at;
+                            for (int e = 0; e < 3; ++e) { if (e == entry) continue; const int a = S[cur][e], b = S[cur][(e + 1) % 3]; if (pierce(T, std::min(a, b), std::max(a, b), at)) { ++exits; exit = e; } }
+                            std::fprintf(stderr, " [%d exits %d]", cur, exits);
+                            if (exits != 1) break;
+                            const int nx = m_neighbour[cur][exit]; if (nx < 0) { std::fprintf(stderr, " border"); break; }
+                            const int a = S[cur][exit], b = S[cur][(exit + 1) % 3]; entry = -1;
+                            for (int e = 0; e < 3; ++e) if (undirected(S[nx][e], S[nx][(e + 1) % 3]) == undirected(a, b)) entry = e;
+                            cur = nx;
+                        }
+                        std::fprintf(stderr, "\n");
+                    }
+                }
+                (void)bb; (void)none2;
+            }
+        }
+
+        // Pieces: the triangle's boundary cut by each polyline in turn.
+        std::vector<std::vector<int>> polygons{cycle};
+        std::vector<std::array<int, 2>> across;  // per polyline: the two polygons beside it
+        for (const auto& line : polylines) {
+            int owner = -1;
+            for (std::size_t k = 0; k < polygons.size() && owner < 0; ++k) {
+                const auto& poly = polygons[k];
+                if (std::count(poly.begin(), poly.end(), line.front()) && std::count(poly.begin(), poly.end(), line.back()))
+                    owner = static_cast<int>(k);
+            }
+            if (owner < 0)
+                return Status::error("two cuts cross inside one surface triangle");
+            const std::vector<int> poly = polygons[owner];
+            const int n = static_cast<int>(poly.size());
+            const int ia = static_cast<int>(std::find(poly.begin(), poly.end(), line.front()) - poly.begin());
+            const int ib = static_cast<int>(std::find(poly.begin(), poly.end(), line.back()) - poly.begin());
+            std::vector<int> first, second;
+            for (int i = ia;; i = (i + 1) % n) {
+                first.push_back(poly[i]);
+                if (i == ib)
+                    break;
+            }
+            for (std::size_t k = line.size() - 2; k >= 1; --k)
+                first.push_back(line[k]);
+            for (int i = ib;; i = (i + 1) % n) {
+                second.push_back(poly[i]);
+                if (i == ia)
+                    break;
+            }
+            for (std::size_t k = 1; k + 1 < line.size(); ++k)
+                second.push_back(line[k]);
+            polygons[owner] = std::move(first);
+            polygons.push_back(std::move(second));
+            across.push_back({owner, static_cast<int>(polygons.size()) - 1});
+            for (std::size_t k = 0; k + 1 < line.size(); ++k)
+                m_cutEdges.insert(undirected(line[k], line[k + 1]));
+        }
+        for (const auto& line : polylines)
+            for (int v : line)
+                m_cutVertices.insert(v);
+
+        // Sides: from a segment of the cut on the piece's boundary (the side of that segment's
+        // sweep triangle a point just inside the piece lies on: the two pieces beside a segment
+        // always get opposite sides), else from an original corner off the cut, else across a
+        // polyline.
+        std::vector<int> side(polygons.size(), 0);
+        const Vec3 normal = (P[q[1]] - P[q[0]]).cross(P[q[2]] - P[q[0]]);
+        // A (nearly) flat triangle, a sliver an earlier degenerate cut left, has no plane to
+        // probe in: its pieces take their sides from their neighbours (assignSides).
+        const double longest = std::max({(P[q[1]] - P[q[0]]).squaredNorm(), (P[q[2]] - P[q[1]]).squaredNorm(),
+                                         (P[q[0]] - P[q[2]]).squaredNorm()});
+        const bool flat = !(normal.norm() > kFlatRatio * longest);
+        for (std::size_t k = 0; k < polygons.size() && !flat; ++k) {
+            const auto& poly = polygons[k];
+            for (std::size_t i = 0; i < poly.size() && side[k] == 0; ++i) {
+                const int a = poly[i], b = poly[(i + 1) % poly.size()];
+                const auto it = segmentTriangle.find(undirected(a, b));
+                if (a == b || it == segmentTriangle.end())
+                    continue;
+                side[k] = pieceSide(it->second, P[a], P[b], normal);
+            }
+        }
+        for (std::size_t k = 0; k < polygons.size() && !flat; ++k)
+            for (int v : polygons[k])
+                if (v < m_first && !m_cutVertices.count(v) && side[k] == 0)
+                    side[k] = cornerSide(q, v);
+        if (std::getenv("RESECT_DEBUG4"))
+            for (const auto& line : polylines)
+              for (std::size_t sg = 0; sg + 1 < line.size(); ++sg) {
+                int a = -1, b = -1;
+                for (std::size_t k = 0; k < polygons.size(); ++k) {
+                    const auto& pg = polygons[k];
+                    for (std::size_t i = 0; i < pg.size(); ++i) {
+                        const int x = pg[i], y = pg[(i + 1) % pg.size()];
+                        if ((x == line[sg] && y == line[sg + 1]) || (y == line[sg] && x == line[sg + 1]))
+                            (a < 0 ? a : b) = int(k);
+                    }
+                }
+                if (a >= 0 && b >= 0 && side[a] == side[b]) {
+                    const auto it = segmentTriangle.find(undirected(line[sg], line[sg + 1]));
+                    const int S = it == segmentTriangle.end() ? -1 : it->second;
+                    if (S >= 0) {
+                        const auto& V = m_sweep.vertices(); const Tri& st = m_sweep.triangles()[S];
+                        const Vec3 sn = (V[st[1]] - V[st[0]]).cross(V[st[2]] - V[st[0]]).normalized();
+                        const auto dist = [&](const Vec3& x) { return sn.dot(x - V[st[0]]); };
+                        std::fprintf(stderr, "  dists a %g b %g corners %g %g %g, seg len %g, cos(T,S) %g\n", dist(P[line[sg]]), dist(P[line[sg+1]]), dist(P[q[0]]), dist(P[q[1]]), dist(P[q[2]]), (P[line[sg]] - P[line[sg+1]]).norm(), std::abs(sn.dot(normal.normalized())));
+                    }
+                    std::fprintf(stderr, "seg tri %d flat %d |n| %g longest %g probes %d %d\n", S, int(flat), normal.norm(), longest,
+                                 S >= 0 ? pieceSide(S, P[line[sg]], P[line[sg + 1]], normal) : 9, S >= 0 ? pieceSide(S, P[line[sg + 1]], P[line[sg]], normal) : 9);
+                    std::fprintf(stderr, "same side %d in triangle %d (%d %d %d):", side[a], t, q[0], q[1], q[2]);
+                    for (const auto& poly : polygons) { std::fprintf(stderr, " ["); for (int v : poly) std::fprintf(stderr, " %d", v); std::fprintf(stderr, "]"); }
+                    for (const auto& l2 : polylines) { std::fprintf(stderr, " line"); for (int v : l2) std::fprintf(stderr, " %d", v); }
+                    std::fprintf(stderr, "\n");
+                }
+              }
+        for (std::size_t round = 0; round < polygons.size(); ++round)
+            for (std::size_t l = 0; l < across.size(); ++l) {
+                auto [a, b] = across[l];
+                if (side[a] == 0 && side[b] != 0)
+                    side[a] = -side[b];
+                if (side[b] == 0 && side[a] != 0)
+                    side[b] = -side[a];
+            }
+
+        // Triangulate every piece in the triangle's plane; the first triangle takes t's slot.
+        const Vec3 n = normal.cwiseAbs();
+        const int drop = n.x() >= n.y() ? (n.x() >= n.z() ? 0 : 2) : (n.y() >= n.z() ? 1 : 2);
+        // A flat triangle (its corners collinear; a sliver an earlier degenerate cut left) has
+        // no orientation: its pieces are then only combinatorial, which is all they need.
+        const int sign = orient2dProjected(P[q[0]], P[q[1]], P[q[2]], drop) >= 0 ? 1 : -1;
+        bool first = true;
+        const std::uint8_t flag = m_s.cutFaces[t];
+        for (std::size_t k = 0; k < polygons.size(); ++k) {
+            std::vector<int> poly;
+            for (int v : polygons[k])
+                if (poly.empty() || v != poly.back())
+                    poly.push_back(v);
+            while (poly.size() > 1 && poly.back() == poly.front())
+                poly.pop_back();
+            if (poly.size() < 3)
+                continue;
+            std::vector<Tri> pieces;
+            if (Status s = triangulatePiece(t, q, poly, drop, sign, side[k], pieces); !s.ok())
+                return s;
+            for (const Tri& piece : pieces) {
+                int index;
+                if (first) {
+                    m_edit.replace(t, piece);
+                    index = t;
+                    first = false;
+                } else {
+                    m_s.triangles.push_back(piece);
+                    m_s.cutFaces.push_back(flag);
+                    index = m_s.triangleCount() - 1;
+                }
+                m_pieces.push_back(index);
+                m_side[index] = side[k];
+            }
+        }
+        return Status::success();
+    }
+
+    /// Triangulates one piece of triangle q (polygon `poly` in its plane) without an edge
+    /// between two points of the cut: by ear clipping, and where the cut bulges so that only
+    /// such ears are left, by a fan from a new vertex inside the rest (its centroid, if it sees
+    /// the whole rest), else with the pinching edge after all.
+    Status triangulatePiece(int t, const Tri& q, const std::vector<int>& poly, int drop, int sign, int side,
+                            std::vector<Tri>& out) {
+        const auto onCut = [&](int v) { return (v >= m_first && !m_inner.count(v)) || m_cutVertices.count(v) > 0; };
+        std::vector<int> rest;
+        if (!earClip(poly, m_s.positions, drop, sign, onCut, false, out, rest))
+            return Status::error("a piece of a cut surface triangle is not a simple polygon");
+        if (rest.empty())
+            return Status::success();
+        Vec3 centre = Vec3::Zero();
+        for (int v : rest)
+            centre += m_s.positions[v] / static_cast<double>(rest.size());
+        if (fansFrom(centre, rest, m_s.positions, drop, sign)) {
+            const auto& P = m_s.positions;
+            const Vec3 w = closestPointBarycentric(centre, P[q[0]], P[q[1]], P[q[2]]);
+            // Inside a piece of an earlier cut face, the centre takes that face's (u, v).
+            const Vec2 uv = m_s.cutFaces[t] ? Vec2(w[0] * m_s.cutUvs[q[0]] + w[1] * m_s.cutUvs[q[1]] + w[2] * m_s.cutUvs[q[2]])
+                                            : Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
+            const int c = addVertex(centre, uv, {{q[0], w[0]}, {q[1], w[1]}, {q[2], w[2]}}, {q[0], q[1]});
+            m_inner.insert(c);
+            m_innerSide[c] = side;
+            for (std::size_t i = 0; i < rest.size(); ++i)
+                out.push_back({c, rest[i], rest[(i + 1) % rest.size()]});
+            return Status::success();
+        }
+        std::vector<int> none;
+        if (!earClip(rest, m_s.positions, drop, sign, onCut, true, out, none))
+            return Status::error("a piece of a cut surface triangle is not a simple polygon");
+        return Status::success();
+    }
+
+    /// A new vertex where a sweep edge pierces triangle q.
+    int addPierceVertex(const Tri& q, const Pierce& p) {
+        const auto& P = m_s.positions;
+        const Vec3 w = closestPointBarycentric(p.point, P[q[0]], P[q[1]], P[q[2]]);
+        return addVertex(p.point, p.uv, {{q[0], w[0]}, {q[1], w[1]}, {q[2], w[2]}}, {q[0], q[1]});
+    }
+
+    // --- step 5: separate the sides ---
+
+    /// Every vertex on the cut gets one copy per group of its triangles that stay connected
+    /// through edges not on the cut (as the tets' separate step does, section 4.4): a split
+    /// point between two sides gets two, the end of a partial cut (a face vertex of the paper)
+    /// stays one, shared by both sides.
+    /// The triangles the cut touches: the pieces of split triangles and every triangle around
+    /// a surface vertex on the cut.
+    void collectTouched() {
+        std::vector<int> scan = m_pieces;
+        for (int t : m_candidates)
+            for (int v : m_s.triangles[t])
+                if (v < m_first && m_cutVertices.count(v)) {
+                    scan.push_back(t);
+                    break;
+                }
+        std::sort(scan.begin(), scan.end());
+        scan.erase(std::unique(scan.begin(), scan.end()), scan.end());
+        m_touched = std::move(scan);
+    }
+
+    /// Sides (+1 / -1 of the sweep) of the touched triangles. The pieces of split triangles
+    /// have theirs from splitTriangle (probed next to a cut segment, so the two pieces beside a
+    /// segment always get opposite sides). Other touched triangles (around a surface vertex on
+    /// the cut) are probed the same way next to a cut edge they have, or else take the side of
+    /// a neighbour across an edge not on the cut. (No global 2-colouring: around the end of a
+    /// partial cut the two sides are one region.)
+    void assignSides() {
+        const auto& P = m_s.positions;
+        std::unordered_map<std::uint64_t, std::vector<int>> byEdge;
+        for (int t : m_touched) {
+            const Tri& q = m_s.triangles[t];
+            for (int e = 0; e < 3; ++e)
+                byEdge[undirected(q[e], q[(e + 1) % 3])].push_back(t);
+            if (m_side.count(t) && m_side[t] != 0)
+                continue;
+            const Vec3 normal = (P[q[1]] - P[q[0]]).cross(P[q[2]] - P[q[0]]);
+            const double longest = std::max({(P[q[1]] - P[q[0]]).squaredNorm(), (P[q[2]] - P[q[1]]).squaredNorm(),
+                                             (P[q[0]] - P[q[2]]).squaredNorm()});
+            if (!(normal.norm() > kFlatRatio * longest))
+                continue;
+            for (int e = 0; e < 3 && (!m_side.count(t) || m_side[t] == 0); ++e) {
+                const auto it = m_segmentTriangle.find(undirected(q[e], q[(e + 1) % 3]));
+                if (it != m_segmentTriangle.end())
+                    m_side[t] = pieceSide(it->second, P[q[e]], P[q[(e + 1) % 3]], normal);
+            }
+        }
+        // Where the cut separates cleanly, the sides follow from the topology alone: 2-colour
+        // the touched triangles (an edge on the cut joins different colours, any other edge the
+        // same) and give each coloured group the sign most of its probes vote for. A group with
+        // a contradiction (around the end of a partial cut both sides are one region) keeps its
+        // probed sides.
+        std::unordered_map<int, int> colour;
+        for (int seed : m_touched) {
+            if (colour.count(seed))
+                continue;
+            std::vector<int> group{seed};
+            colour[seed] = 1;
+            bool consistent = true;
+            for (std::size_t i = 0; i < group.size(); ++i) {
+                const int t = group[i];
+                const Tri& q = m_s.triangles[t];
+                for (int e = 0; e < 3; ++e) {
+                    const std::uint64_t key = undirected(q[e], q[(e + 1) % 3]);
+                    const auto& list = byEdge[key];
+                    if (list.size() != 2)
+                        continue;
+                    const int other = list[0] == t ? list[1] : list[0];
+                    const int wanted = m_cutEdges.count(key) ? -colour[t] : colour[t];
+                    if (auto it = colour.find(other); it != colour.end()) {
+                        consistent = consistent && it->second == wanted;
+                        continue;
+                    }
+                    colour[other] = wanted;
+                    group.push_back(other);
+                }
+            }
+            if (!consistent)
+                continue;
+            int vote = 0;
+            for (int t : group)
+                if (auto it = m_side.find(t); it != m_side.end())
+                    vote += it->second * colour[t];
+            const int sign = vote >= 0 ? 1 : -1;
+            for (int t : group)
+                m_side[t] = sign * colour[t];
+        }
+        std::vector<int> queue;
+        for (int t : m_touched)
+            if (m_side.count(t) && m_side[t] != 0)
+                queue.push_back(t);
+        for (std::size_t i = 0; i < queue.size(); ++i) {
+            const int t = queue[i];
+            const Tri& q = m_s.triangles[t];
+            for (int e = 0; e < 3; ++e) {
+                const std::uint64_t key = undirected(q[e], q[(e + 1) % 3]);
+                if (m_cutEdges.count(key))
+                    continue;
+                for (int other : byEdge[key])
+                    if (!m_side.count(other) || m_side[other] == 0) {
+                        m_side[other] = m_side[t];
+                        queue.push_back(other);
+                    }
+            }
+        }
+    }
+
+    void separateSides() {
+        std::unordered_map<int, std::vector<int>> incident;
+        const std::vector<int>& scan = m_touched;
+        // Every new vertex (split and pierce points) and every surface vertex on a polyline.
+        for (int t : scan)
+            for (int v : m_s.triangles[t])
+                if ((v >= m_first && !m_inner.count(v)) || m_cutVertices.count(v))
+                    incident[v].push_back(t);
+        // Surface vertices on the cut get their (u, v) on the sweep (for the caps).
+        for (const auto& [v, list] : incident)
+            if (v < m_first)
+                m_edit.setCutUv(v, m_sweep.closestPoint(m_s.positions[v]).uv);
+
+        std::vector<int> vertices;
+        for (const auto& [v, list] : incident)
+            vertices.push_back(v);
+        std::sort(vertices.begin(), vertices.end());
+        for (int c : vertices) {
+            const std::vector<int>& tris = incident[c];
+            UnionFind groups(static_cast<int>(tris.size()));
+            std::unordered_map<int, int> byNeighbour;  // neighbour vertex -> a triangle with edge (c, it)
+            for (int i = 0; i < static_cast<int>(tris.size()); ++i) {
+                const Tri& q = m_s.triangles[tris[i]];
+                const int at = static_cast<int>(std::find(q.begin(), q.end(), c) - q.begin());
+                for (int x : {q[(at + 1) % 3], q[(at + 2) % 3]}) {
+                    if (m_cutEdges.count(undirected(c, x)))
+                        continue;
+                    auto [it, added] = byNeighbour.emplace(x, i);
+                    if (!added)
+                        groups.unite(i, it->second);
+                }
+            }
+            std::vector<int> label;
+            const int count = groups.compact(label);
+            if (std::getenv("RESECT_DEBUG") && (c == 5326 || c == 5327)) {
+                std::fprintf(stderr, "vertex %d: %d groups, cutVertex %d\n", c, count, int(m_cutVertices.count(c)));
+                for (int i = 0; i < int(tris.size()); ++i) {
+                    const Tri& q = m_s.triangles[tris[i]];
+                    std::fprintf(stderr, "  tri %d (%d %d %d) group %d side %d\n", tris[i], q[0], q[1], q[2], label[i], m_side.count(tris[i]) ? m_side[tris[i]] : 9);
+                }
+            }
+            std::vector<int> groupSide(count, 0);
+            for (int i = 0; i < static_cast<int>(tris.size()); ++i)
+                if (auto it = m_side.find(tris[i]); it != m_side.end() && groupSide[label[i]] == 0)
+                    groupSide[label[i]] = it->second;
+            for (int i = 0; i < static_cast<int>(tris.size()); ++i)
+                if (!m_side.count(tris[i]) || m_side[tris[i]] == 0)
+                    m_side[tris[i]] = groupSide[label[i]];
+            if (count == 1) {
+                m_shared.insert(c);
+                continue;
+            }
+            m_copySide[c] = groupSide[0];
+            for (int g = 1; g < count; ++g) {
+                const int copy = copyVertex(c);
+                m_copySide[copy] = groupSide[g];
+                for (int i = 0; i < static_cast<int>(tris.size()); ++i) {
+                    if (label[i] != g)
+                        continue;
+                    Tri r = m_s.triangles[tris[i]];
+                    std::replace(r.begin(), r.end(), c, copy);
+                    m_edit.replace(tris[i], r);
+                }
+            }
+        }
+    }
+
+    int copyVertex(int c) {
+        m_s.positions.push_back(m_s.positions[c]);
+        if (!m_s.uvs.empty())
+            m_s.uvs.push_back(m_s.uvs[c]);
+        if (m_rest)
+            m_rest->push_back((*m_rest)[c]);
+        const Vec2 uv = m_s.cutUvs[c];
+        m_s.cutUvs.push_back(uv);
+        const std::array<int, 2> source = c < m_first ? std::array<int, 2>{c, c} : m_sourceEdge[c - m_first];
+        const int origin = c < m_first ? c : m_origin[c - m_first];
+        m_sourceEdge.push_back(source);
+        m_origin.push_back(origin);
+        return m_s.vertexCount() - 1;
+    }
+
+    int originOf(int v) const { return v >= m_first ? m_origin[v - m_first] : v; }
+
+    // --- step 6: the cut's boundary loops ---
+
+    Status traceBoundary(std::vector<std::vector<int>>& loops) {
+        // Boundary edges join two cut vertices; every triangle holding such an edge holds a
+        // cut vertex, so the opposite half-edge, if any, is among the touched triangles.
+        const auto onCut = [&](int v) { return m_cutVertices.count(originOf(v)) > 0; };
+        std::unordered_set<std::uint64_t> halfEdges;
+        const std::vector<int>& tris = m_touched;
+        for (int t : tris) {
+            const Tri& q = m_s.triangles[t];
+            for (int e = 0; e < 3; ++e)
+                halfEdges.insert(directed(q[e], q[(e + 1) % 3]));
+        }
+        std::unordered_map<int, int> next;
+        for (int t : tris) {
+            const Tri& q = m_s.triangles[t];
+            for (int e = 0; e < 3; ++e) {
+                const int a = q[e], b = q[(e + 1) % 3];
+                if (!onCut(a) || !onCut(b) || halfEdges.count(directed(b, a)))
+                    continue;
+                if (!next.emplace(a, b).second)
+                    return Status::error("the cut boundary is not a set of simple loops (non-manifold cut)");
+                m_edgeSide[directed(a, b)] = m_side.count(t) ? m_side[t] : 0;
+            }
+        }
+        std::vector<int> starts;
+        for (const auto& [a, b] : next)
+            starts.push_back(a);
+        std::sort(starts.begin(), starts.end());
+        std::unordered_set<int> visited;
+        for (int start : starts) {
+            if (visited.count(start))
+                continue;
+            std::vector<int> loop;
+            for (int v = start; !visited.count(v);) {
+                visited.insert(v);
+                loop.push_back(v);
+                auto it = next.find(v);
+                if (it == next.end())
+                    return Status::error("the cut boundary is open (the surface was not closed)");
+                v = it->second;
+            }
+            loops.push_back(std::move(loop));
+        }
+        m_out.loops = static_cast<int>(loops.size());
+        return Status::success();
+    }
+
+    // --- step 7: caps (section 5.2) ---
+
+    /// Position of a (u, v) on the border of the sweep's parameter square, counter-clockwise
+    /// from (0, 0): the bottom (v = 0) gives u, the right 1 + v, the top 3 - u, the left 4 - v;
+    /// a point inside goes to the nearest side.
+    static double perimeterAt(const Vec2& uv) {
+        const double u = std::clamp(uv.x(), 0.0, 1.0), v = std::clamp(uv.y(), 0.0, 1.0);
+        const double d[4] = {v, 1 - u, 1 - v, u};
+        const int side = static_cast<int>(std::min_element(d, d + 4) - d);
+        switch (side) {
+        case 0: return u;
+        case 1: return 1 + v;
+        case 2: return 3 - u;
+        default: return 4 - v;
+        }
+    }
+
+    /// The + side's cap polygons of one piece. The + boundary runs counter-clockwise around the
+    /// cap in (u, v) (the parameterisation is counter-clockwise seen from the + side the
+    /// sweep's normal points to, and a piece's boundary runs against its cap's). Whole loops of
+    /// + edges are polygons as they are. A loop through shared vertices (the ends of a partial
+    /// cut, where the sweep's border lies inside the tissue: the paper's face vertices) is cut
+    /// there into lips; the + lips are joined in the order their ends meet the sweep's border,
+    /// going counter-clockwise along it, by chords (the paper's jump from one face vertex to the
+    /// next): the cap then covers the sweep up to its border, even when the border crosses the
+    /// surface several times.
+    Status plusPolygons(const std::vector<std::vector<int>>& loops, std::vector<std::vector<int>>& out) {
+        std::vector<std::vector<int>> arcs;
+        for (const auto& loop : loops) {
+            const int n = static_cast<int>(loop.size());
+            if (const char* watch = std::getenv("RESECT_WATCH"); watch && (std::count(loop.begin(), loop.end(), std::atoi(watch)) || (std::getenv("RESECT_SMALL") && n <= 3))) {
+                std::fprintf(stderr, "loop (%d):", n);
+                for (int i = 0; i < n; ++i)
+                    std::fprintf(stderr, " %d%s[%d,o%d]", loop[i], m_shared.count(loop[i]) ? "s" : "", m_edgeSide[directed(loop[i], loop[(i + 1) % n])], originOf(loop[i]));
+                std::fprintf(stderr, "\n");
+            }
+            std::vector<int> cuts;
+            for (int i = 0; i < n; ++i)
+                if (m_shared.count(loop[i]))
+                    cuts.push_back(i);
+            const auto sideAt = [&](int i) { return m_edgeSide[directed(loop[i], loop[(i + 1) % n])]; };
+            if (cuts.empty()) {
+                if (sideAt(0) == 0)
+                    return Status::error("a cut-boundary loop lies on no side of the sweep");
+                if (sideAt(0) > 0)
+                    out.push_back(loop);
+                continue;
+            }
+            for (std::size_t k = 0; k < cuts.size(); ++k) {
+                const int a = cuts[k], b = cuts[(k + 1) % cuts.size()];
+                if (sideAt(a) <= 0)
+                    continue;
+                std::vector<int> arc;
+                for (int i = a;; i = (i + 1) % n) {
+                    arc.push_back(loop[i]);
+                    if (i == b && arc.size() > 1)
+                        break;
+                }
+                arcs.push_back(std::move(arc));
+            }
+        }
+        if (arcs.empty())
+            return Status::success();
+        // Ends and starts of the lips along the border; they must alternate (end, start, ...).
+        struct Stop {
+            double at;
+            int arc;
+            bool start;
+        };
+        std::vector<Stop> stops;
+        for (int a = 0; a < static_cast<int>(arcs.size()); ++a) {
+            stops.push_back({perimeterAt(m_s.cutUvs[arcs[a].front()]), a, true});
+            stops.push_back({perimeterAt(m_s.cutUvs[arcs[a].back()]), a, false});
+        }
+        std::sort(stops.begin(), stops.end(), [](const Stop& x, const Stop& y) {
+            return x.at != y.at ? x.at < y.at : (x.start ? 1 : 0) < (y.start ? 1 : 0);
+        });
+        const int m = static_cast<int>(stops.size());
+        std::vector<int> next(arcs.size(), -1);
+        for (int i = 0; i < m; ++i)
+            if (!stops[i].start) {
+                const Stop& following = stops[(i + 1) % m];
+                if (!following.start) {
+                    next.assign(arcs.size(), -1);  // not alternating: each lip closes itself
+                    break;
+                }
+                next[stops[i].arc] = following.arc;
+            }
+        std::vector<bool> used(arcs.size(), false);
+        for (int a = 0; a < static_cast<int>(arcs.size()); ++a) {
+            if (used[a])
+                continue;
+            std::vector<int> polygon;
+            for (int b = a; b >= 0 && !used[b]; b = next[b]) {
+                used[b] = true;
+                for (int v : arcs[b])
+                    if (polygon.empty() || polygon.back() != v)
+                        polygon.push_back(v);
+                if (next[b] < 0)
+                    break;
+            }
+            while (polygon.size() > 1 && polygon.back() == polygon.front())
+                polygon.pop_back();
+            if (polygon.size() >= 3)
+                out.push_back(std::move(polygon));
+        }
+        return Status::success();
+    }
+
+    /// + copy -> - copy of every vertex on the + side's boundary, from the cut edges (each has
+    /// a + and a - triangle); shared vertices are their own mates.
+    void findMates() {
+        std::unordered_map<std::uint64_t, std::array<int, 2>> sides;  // origin edge -> (+ tri, - tri)
+        for (int t : m_touched) {
+            const Tri& q = m_s.triangles[t];
+            const int s = m_side.count(t) ? m_side[t] : 0;
+            if (s == 0)
+                continue;
+            for (int e = 0; e < 3; ++e) {
+                const std::uint64_t key = undirected(originOf(q[e]), originOf(q[(e + 1) % 3]));
+                if (!m_cutEdges.count(key))
+                    continue;
+                auto& entry = sides.try_emplace(key, std::array<int, 2>{-1, -1}).first->second;
+                entry[s > 0 ? 0 : 1] = t;
+            }
+        }
+        for (const auto& [key, pair] : sides) {
+            if (pair[0] < 0 || pair[1] < 0)
+                continue;
+            const int ends[2] = {static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffu)};
+            for (int u : m_s.triangles[pair[0]]) {
+                const int o = originOf(u);
+                if (o != ends[0] && o != ends[1])
+                    continue;
+                for (int w : m_s.triangles[pair[1]])
+                    if (originOf(w) == o)
+                        m_mate[u] = w;
+            }
+        }
+        for (int v : m_shared)
+            m_mate[v] = v;
+    }
+
+    /// True if the surface (outside the caps) has the edge (a, b). Only edges between two cut
+    /// vertices matter here; they are all in touched triangles.
+    bool surfaceHasEdge(int a, int b) {
+        if (m_surfaceEdges.empty())
+            for (int t : m_touched) {
+                const Tri& q = m_s.triangles[t];
+                for (int e = 0; e < 3; ++e)
+                    m_surfaceEdges.insert(undirected(q[e], q[(e + 1) % 3]));
+            }
+        return m_surfaceEdges.count(undirected(a, b)) > 0;
+    }
+
+    /// A cap edge between two boundary vertices that the surface beside it also has (on
+    /// either side: the - cap mirrors the + cap), or between two shared vertices (the - cap has
+    /// it too), would make that edge belong to four triangles.
+    /// Such interior cap edges are flipped away (the cap is any triangulation of its loops, so
+    /// this only changes which diagonal it uses); both caps stay mirror images.
+    void avoidSurfaceEdges(std::vector<std::array<int, 3>>& cap, const std::vector<int>& vertexOf) {
+        const auto forbidden = [&](int a, int b) {
+            const int u = vertexOf[a], w = vertexOf[b];
+            // Between two shared vertices an interior edge of the + cap is one of the - cap too.
+            if (surfaceHasEdge(u, w) || (m_shared.count(u) && m_shared.count(w)))
+                return true;
+            const auto mu = m_mate.find(u), mw = m_mate.find(w);
+            return mu != m_mate.end() && mw != m_mate.end() && surfaceHasEdge(mu->second, mw->second);
+        };
+        for (int round = 0; round < 4; ++round) {
+            std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>> edges;  // edge -> (triangle, corner opposite)
+            for (int t = 0; t < static_cast<int>(cap.size()); ++t)
+                for (int e = 0; e < 3; ++e)
+                    edges[undirected(cap[t][e], cap[t][(e + 1) % 3])].push_back({t, (e + 2) % 3});
+            bool flipped = false;
+            std::unordered_set<int> changed;
+            for (const auto& [key, list] : edges) {
+                if (list.size() != 2 || changed.count(list[0].first) || changed.count(list[1].first))
+                    continue;
+                const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+                if (!forbidden(a, b))
+                    continue;
+                const auto [t1, o1] = list[0];
+                const auto [t2, o2] = list[1];
+                const int c = cap[t1][o1], d = cap[t2][o2];
+                if (c == d || edges.count(undirected(c, d)) || forbidden(c, d))
+                    continue;
+                // t1 = (x, y, c) with edge x -> y, t2 = (y, x, d): the flip gives (c, x, d), (d, y, c).
+                const int x = cap[t1][(o1 + 1) % 3], y = cap[t1][(o1 + 2) % 3];
+                cap[t1] = {c, x, d};
+                cap[t2] = {d, y, c};
+                changed.insert(t1);
+                changed.insert(t2);
+                flipped = true;
+            }
+            if (!flipped)
+                break;
+        }
+    }
+
+    Status closeCaps(const std::vector<std::vector<int>>& loops) {
+        if (loops.empty())
+            return Status::success();
+        findMates();
+        // Each piece is closed on its own: loops grouped by the connected component of the
+        // surface they bound (pieces may touch along earlier cuts, where their points coincide).
+        UnionFind pieces(m_s.vertexCount());
+        for (const Tri& q : m_s.triangles) {
+            pieces.unite(q[1], q[0]);
+            pieces.unite(q[2], q[0]);
+        }
+        std::map<int, std::vector<std::vector<int>>> loopsOfPiece;
+        for (const auto& loop : loops)
+            loopsOfPiece[pieces.find(loop[0])].push_back(loop);
+        int capCount = 0, closed = 0;
+        for (const auto& [piece, pieceLoops] : loopsOfPiece) {
+            std::vector<std::vector<int>> polygons;
+            if (Status s = plusPolygons(pieceLoops, polygons); !s.ok())
+                return s;
+            if (polygons.empty())
+                continue;
+            ++closed;
+            std::vector<Vec2> uv;
+            std::vector<int> vertexOf;
+            std::vector<std::vector<int>> local;
+            for (const auto& polygon : polygons) {
+                std::vector<int> loop;
+                for (int v : polygon) {
+                    loop.push_back(static_cast<int>(uv.size()));
+                    uv.push_back(m_s.cutUvs[v]);
+                    vertexOf.push_back(v);
+                }
+                local.push_back(std::move(loop));
+            }
+            const int side = 1;  // the + boundary runs counter-clockwise around its cap (plusPolygons)
+            std::vector<std::array<int, 3>> cap;
+            if (Status s = triangulateCap(uv, local, side, cap); !s.ok())
+                return s;
+            avoidSurfaceEdges(cap, vertexOf);
+            if (const char* watch = std::getenv("RESECT_WATCH"); watch && std::count(vertexOf.begin(), vertexOf.end(), std::atoi(watch))) {
+                std::fprintf(stderr, "piece with %s: %zu polygons, %zu cap triangles:", watch, polygons.size(), cap.size());
+                for (const auto& c : cap) {
+                    std::fprintf(stderr, " (%d %d %d)", vertexOf[c[0]], vertexOf[c[1]], vertexOf[c[2]]);
+                    for (int k = 0; k < 3; ++k) { auto it = m_mate.find(vertexOf[c[k]]); std::fprintf(stderr, "[m%d]", it == m_mate.end() ? -9 : it->second); }
+                }
+                std::fprintf(stderr, "\n");
+                for (std::size_t k = 0; k < uv.size(); ++k) std::fprintf(stderr, "  uv %d: %.17g %.17g\n", vertexOf[k], uv[k].x(), uv[k].y());
+            }
+            for (const auto& c : cap) {
+                // Counter-clockwise in (u, v); the + cap must run against the + boundary.
+                Tri plus{vertexOf[c[0]], vertexOf[c[1]], vertexOf[c[2]]};
+                if (side > 0)
+                    std::swap(plus[1], plus[2]);
+                Tri minus;
+                for (int k = 0; k < 3; ++k) {
+                    auto it = m_mate.find(plus[k]);
+                    if (it == m_mate.end()) {
+                        if (std::getenv("RESECT_DEBUG3")) {
+                            const int u = plus[k];
+                            std::fprintf(stderr, "no mate for %d (origin %d, shared %d)\n", u, originOf(u), int(m_shared.count(u)));
+                            for (const auto& pg : polygons) {
+                                const auto it2 = std::find(pg.begin(), pg.end(), u);
+                                if (it2 == pg.end()) continue;
+                                const int i = int(it2 - pg.begin()), n = int(pg.size());
+                                for (int d = -3; d <= 3; ++d) { const int v = pg[(i + d + n) % n], w = pg[(i + d + 1 + n) % n];
+                                    std::fprintf(stderr, "   poly %d%s -> %d side %d\n", v, m_shared.count(v) ? "s" : "", w, m_edgeSide.count(directed(v, w)) ? m_edgeSide[directed(v, w)] : 7); }
+                            }
+                            for (int t : m_touched) {
+                                const Tri& q = m_s.triangles[t];
+                                bool has = false;
+                                for (int v : q) has = has || originOf(v) == originOf(u);
+                                if (!has) continue;
+                                std::fprintf(stderr, "  tri %d (%d %d %d) origins (%d %d %d) side %d cutedges:", t, q[0], q[1], q[2], originOf(q[0]), originOf(q[1]), originOf(q[2]), m_side.count(t) ? m_side[t] : 9);
+                                for (int e = 0; e < 3; ++e) if (m_cutEdges.count(undirected(originOf(q[e]), originOf(q[(e+1)%3])))) std::fprintf(stderr, " %d-%d", q[e], q[(e+1)%3]);
+                                std::fprintf(stderr, "\n");
+                            }
+                        }
+                        return Status::error("a cut-boundary vertex has no copy on the other side");
+                    }
+                    minus[k] = it->second;
+                }
+                std::swap(minus[1], minus[2]);
+                // A triangle of shared vertices only (between chords of a partial cut) is its own
+                // mirror: the two would lie on each other and pinch the surface; neither is needed.
+                if (minus[0] == plus[0] && minus[1] == plus[2] && minus[2] == plus[1])
+                    continue;
+                ++capCount;
+                m_s.triangles.push_back(plus);
+                m_s.triangles.push_back(minus);
+                m_s.cutFaces.push_back(1);
+                m_s.cutFaces.push_back(1);
+            }
+        }
+        if (closed == 0)
+            return Status::error("the cut boundary has no side to close");
+        m_out.capTriangles = 2 * capCount;
+        return Status::success();
+    }
+
+    void finishCounts() {
+        m_out.splitEdges = static_cast<int>(m_splits.size());
+        for (const auto& [key, list] : m_splits)
+            for (const EdgeSplit& s : list)
+                if (m_shared.count(s.vertex))
+                    ++m_out.faceVertices;
+        const int added = m_s.vertexCount() - m_first;
+        m_out.sourceEdge = m_sourceEdge;
+        m_out.sweepUv.assign(m_s.cutUvs.begin() + m_first, m_s.cutUvs.end());
+        m_out.side.assign(added, 0);
+        for (int v = m_first; v < m_s.vertexCount(); ++v) {
+            if (auto it = m_innerSide.find(v); it != m_innerSide.end()) {
+                m_out.side[v - m_first] = it->second;
+                continue;
+            }
+            if (m_shared.count(v))
+                continue;
+            auto it = m_copySide.find(v);
+            m_out.side[v - m_first] = it == m_copySide.end() ? 0 : it->second;
+        }
+    }
+
+    TriangleSurface& m_s;
+    std::vector<Vec3>* m_rest;
+    const SweepSurface& m_sweep;
+    SurfaceCut& m_out;
+    SurfaceEdit m_edit;
+    const int m_first;
+
+    std::vector<int> m_candidates;
+    std::unordered_map<std::uint64_t, std::vector<EdgeSplit>> m_splits;
+    std::unordered_set<int> m_onSweep;
+    std::unordered_map<int, std::vector<int>> m_holding;  ///< on-sweep vertex -> sweep triangles
+    std::vector<std::array<int, 3>> m_neighbour;          ///< sweep triangle -> across each edge
+    std::vector<std::vector<int>> m_vertexTriangles;      ///< sweep vertex -> triangles
+    std::vector<std::array<int, 2>> m_sourceEdge;         ///< per new vertex
+    std::vector<int> m_origin;                            ///< per new vertex: the cut vertex it copies
+    std::unordered_set<std::uint64_t> m_cutEdges;         ///< (origin) edges on the cut
+    std::unordered_set<int> m_cutVertices;                ///< vertices on the cut polylines
+    std::vector<int> m_pieces;                            ///< triangles made by step 4
+    std::vector<int> m_touched;                           ///< triangles at cut vertices
+    std::unordered_map<int, int> m_side;                  ///< triangle -> side of the sweep
+    std::unordered_set<int> m_shared;                     ///< cut vertices kept as one (face vertices)
+    std::unordered_map<int, int> m_copySide;              ///< cut vertex copy -> its side
+    std::unordered_map<std::uint64_t, int> m_edgeSide;    ///< boundary half-edge -> side
+    std::unordered_map<int, int> m_mate;                  ///< + copy -> - copy
+    std::unordered_set<int> m_inner;                      ///< new vertices inside a piece (fan centres)
+    std::unordered_set<std::uint64_t> m_surfaceEdges;     ///< edges of the touched triangles
+    std::unordered_map<std::uint64_t, int> m_segmentTriangle;  ///< cut segment -> the sweep triangle it lies in
+    std::unordered_map<int, int> m_innerSide;             ///< their side
+};
+
 } // namespace
 
 Status cutSurface(TriangleSurface& surface, std::vector<Vec3>* rest, const SweepSurface& sweep, SurfaceCut& out) {
@@ -96,286 +1458,13 @@ Status cutSurface(TriangleSurface& surface, std::vector<Vec3>* rest, const Sweep
         return Status::error("rest positions do not match the surface's vertices");
     if (!surface.uvs.empty() && surface.uvs.size() != surface.positions.size())
         return Status::error("the surface's texture coordinates do not match its vertices");
-    // 1. Crossed edges among the candidate triangles (an odd number of crossings: split at
-    // the middle one). Both triangles of a crossed edge are candidates.
-    const std::vector<int> candidates = candidateTriangles(surface, sweep);
-    out.candidateTriangles = static_cast<int>(candidates.size());
-    std::unordered_map<std::uint64_t, Crossing> crossings;
-    SegmentQuery query;
-    std::vector<int> scratch;
-    // Each edge of a closed surface is in two triangles, once in each direction: test it
-    // from the direction low -> high only.
-    for (int t : candidates) {
-        const Tri& q = surface.triangles[t];
-        for (int e = 0; e < 3; ++e) {
-            const int a = q[e], b = q[(e + 1) % 3];
-            if (a > b)
-                continue;
-            intersectSegment(sweep, surface.positions[a], surface.positions[b], query, scratch);
-            if (query.hits.size() % 2 == 1) {
-                Crossing c;
-                c.hit = query.hits[query.hits.size() / 2];
-                c.low = a;
-                c.high = b;
-                crossings.emplace(key(a, b), c);
-            }
-        }
+    SurfaceCutter cutter(surface, rest, sweep, out);
+    if (Status s = cutter.run(); !s.ok()) {
+        const int first = out.firstNewVertex;
+        out = {};
+        out.firstNewVertex = first;
+        return s;
     }
-    if (crossings.empty())
-        return Status::success();
-    const auto crossingOf = [&](int a, int b) -> Crossing* {
-        auto it = crossings.find(key(a, b));
-        return it == crossings.end() ? nullptr : &it->second;
-    };
-    // 2. Crossed triangles; those with one crossed edge make their crossing a shared face
-    // vertex.
-    std::vector<std::pair<int, int>> crossed;  // (triangle, crossed edges)
-    for (int t : candidates) {
-        const Tri& q = surface.triangles[t];
-        int count = 0;
-        for (int e = 0; e < 3; ++e)
-            count += crossingOf(q[e], q[(e + 1) % 3]) ? 1 : 0;
-        if (count == 3)
-            return Status::error("a surface triangle is crossed on all three edges (the sweep folds inside it)");
-        if (count > 0)
-            crossed.emplace_back(t, count);
-    }
-    for (const auto& [t, count] : crossed)
-        if (count == 1) {
-            const Tri& q = surface.triangles[t];
-            for (int e = 0; e < 3; ++e)
-                if (Crossing* c = crossingOf(q[e], q[(e + 1) % 3]))
-                    c->shared = true;
-        }
-
-    // 3. Split points, appended in place; the edit log undoes everything on error.
-    SurfaceEdit edit(surface, rest);
-    const bool hasUv = !surface.uvs.empty();
-    surface.cutUvs.resize(surface.vertexCount(), Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
-    surface.cutFaces.resize(surface.triangleCount(), 0);
-    const auto addVertex = [&](const Crossing& c, int side) {
-        const double t = c.hit.t;
-        out.sourceEdge.push_back({c.low, c.high});
-        out.side.push_back(side);
-        surface.positions.push_back(c.hit.point);
-        if (hasUv)
-            surface.uvs.push_back((1 - t) * surface.uvs[c.low] + t * surface.uvs[c.high]);
-        if (rest)
-            rest->push_back((1 - t) * (*rest)[c.low] + t * (*rest)[c.high]);
-        surface.cutUvs.push_back(c.hit.uv);
-        out.sweepUv.push_back(c.hit.uv);
-        return surface.vertexCount() - 1;
-    };
-    // Number in a fixed order (the triangles') so that vertex numbering is reproducible.
-    for (const auto& [t, count] : crossed) {
-        const Tri q = surface.triangles[t];
-        for (int e = 0; e < 3; ++e) {
-            Crossing* c = crossingOf(q[e], q[(e + 1) % 3]);
-            if (!c || c->plus >= 0)
-                continue;
-            ++out.splitEdges;
-            c->plus = addVertex(*c, c->shared ? 0 : 1);
-            if (c->shared) {
-                c->minus = c->plus;
-                ++out.faceVertices;
-            } else {
-                c->minus = addVertex(*c, -1);
-            }
-        }
-    }
-    // Side of an original vertex relative to the crossing on one of its edges.
-    const auto sideAt = [](const Crossing& c, int v) { return v == c.low ? c.hit.sideP : -c.hit.sideP; };
-
-    // 4. Split the crossed triangles in place, keeping their orientation; the pieces inherit
-    // the cut-face flag (a later cut through an earlier cut face).
-    std::vector<int> splitTriangles;  // every triangle made in this step
-    const auto emit = [&](int original, bool first, const Tri& q) {
-        if (first) {
-            edit.replaced.emplace_back(original, surface.triangles[original]);
-            surface.triangles[original] = q;
-            splitTriangles.push_back(original);
-        } else {
-            const std::uint8_t flag = surface.cutFaces[original];
-            surface.triangles.push_back(q);
-            surface.cutFaces.push_back(flag);
-            splitTriangles.push_back(surface.triangleCount() - 1);
-        }
-    };
-    for (const auto& [t, count] : crossed) {
-        const Tri q = surface.triangles[t];
-        if (count == 1) {
-            int e = 0;
-            while (!crossingOf(q[e], q[(e + 1) % 3]))
-                ++e;
-            const int x = q[e], y = q[(e + 1) % 3], z = q[(e + 2) % 3];
-            const int f = crossingOf(x, y)->plus;  // shared
-            emit(t, true, {x, f, z});
-            emit(t, false, {f, y, z});
-            continue;
-        }
-        // Two crossed edges: the lone vertex x is the one both crossed edges share.
-        int r = 0;
-        while (!(crossingOf(q[r], q[(r + 1) % 3]) && crossingOf(q[(r + 2) % 3], q[r])))
-            ++r;
-        const int x = q[r], y = q[(r + 1) % 3], z = q[(r + 2) % 3];
-        const Crossing& p = *crossingOf(x, y);
-        const Crossing& w = *crossingOf(z, x);
-        const int sx = sideAt(p, x);
-        emit(t, true, {x, p.copyFor(sx), w.copyFor(sx)});
-        emit(t, false, {p.copyFor(-sx), y, z});
-        emit(t, false, {p.copyFor(-sx), z, w.copyFor(-sx)});
-    }
-
-    // 5. The cut boundary: half-edges of the split triangles through a new vertex without an
-    // opposite (an opposite of such an edge can only be in another split triangle).
-    std::unordered_set<std::uint64_t> halfEdges;
-    for (int t : splitTriangles) {
-        const Tri& q = surface.triangles[t];
-        for (int e = 0; e < 3; ++e)
-            halfEdges.insert(directed(q[e], q[(e + 1) % 3]));
-    }
-    std::unordered_map<int, int> next;
-    for (int t : splitTriangles) {
-        const Tri& q = surface.triangles[t];
-        for (int e = 0; e < 3; ++e) {
-            const int a = q[e], b = q[(e + 1) % 3];
-            if (a < out.firstNewVertex && b < out.firstNewVertex)
-                continue;
-            if (!halfEdges.count(directed(b, a))) {
-                if (next.count(a))
-                    return Status::error("the cut boundary is not a set of simple loops (non-manifold cut)");
-                next[a] = b;
-            }
-        }
-    }
-    std::vector<std::vector<int>> loops;
-    std::unordered_set<int> visited;
-    std::vector<int> starts;
-    for (const auto& [a, b] : next)
-        starts.push_back(a);
-    std::sort(starts.begin(), starts.end());
-    for (int start : starts) {
-        if (visited.count(start))
-            continue;
-        std::vector<int> loop;
-        for (int v = start; !visited.count(v);) {
-            visited.insert(v);
-            loop.push_back(v);
-            auto it = next.find(v);
-            if (it == next.end())
-                return Status::error("the cut boundary is open (the surface was not closed)");
-            v = it->second;
-        }
-        loops.push_back(std::move(loop));
-    }
-    out.loops = static_cast<int>(loops.size());
-
-    // 6. Cap polygons of the + side, in the sweep's (u, v) plane. A loop through the two face
-    // vertices of a partial cut is cut there into its two lips; the + lip is closed by the chord.
-    std::unordered_map<int, int> minusOf;  // new vertex -> its - copy
-    std::unordered_set<int> sharedVertex, plusVertex;
-    for (const auto& [k, c] : crossings) {
-        minusOf[c.plus] = c.minus;
-        minusOf[c.minus] = c.minus;
-        plusVertex.insert(c.plus);
-        if (c.shared)
-            sharedVertex.insert(c.plus);
-    }
-    std::vector<std::vector<int>> plusPolygons;  // boundary order of the + side (cap is reversed)
-    for (const auto& loop : loops) {
-        std::vector<int> cuts;
-        for (std::size_t i = 0; i < loop.size(); ++i)
-            if (sharedVertex.count(loop[i]))
-                cuts.push_back(static_cast<int>(i));
-        if (cuts.empty()) {
-            // A whole loop lies on one side: keep the + side's loops.
-            if (plusVertex.count(loop[0]) && !sharedVertex.count(loop[0]))
-                plusPolygons.push_back(loop);
-            continue;
-        }
-        if (cuts.size() != 2)
-            return Status::error("a partial cut with " + std::to_string(cuts.size()) +
-                                 " face vertices on one boundary loop is not supported");
-        for (int k = 0; k < 2; ++k) {
-            std::vector<int> arc;
-            for (int i = cuts[k];; i = (i + 1) % static_cast<int>(loop.size())) {
-                arc.push_back(loop[i]);
-                if (i == cuts[1 - k])
-                    break;
-            }
-            // The arc between the face vertices: + copies make the + lip.
-            if (arc.size() > 2 ? plusVertex.count(arc[1]) && !sharedVertex.count(arc[1]) : false)
-                plusPolygons.push_back(arc);
-        }
-    }
-    if (plusPolygons.empty())
-        return Status::error("the cut boundary has no side to close");
-
-    // Points in (u, v), indexed locally (new vertex v -> v - firstNewVertex).
-    std::vector<Vec2> uv(out.sweepUv.begin(), out.sweepUv.end());
-    const int first = out.firstNewVertex;
-    // Each piece is closed on its own. Polygons whose (u, v) boxes are disjoint can neither
-    // nest nor touch: each is its own cap. Overlapping ones may be nested loops of one piece
-    // (an annulus) or loops of different pieces touching on earlier cut faces, where their
-    // points coincide: only these are grouped by connected component (one pass over the
-    // surface's triangles).
-    std::vector<Eigen::AlignedBox2d> boxes;
-    for (const auto& polygon : plusPolygons) {
-        Eigen::AlignedBox2d b;
-        for (int v : polygon)
-            b.extend(uv[v - first]);
-        boxes.push_back(b);
-    }
-    std::vector<int> group(plusPolygons.size());
-    std::iota(group.begin(), group.end(), 0);
-    bool overlapping = false;
-    for (std::size_t i = 0; i < boxes.size() && !overlapping; ++i)
-        for (std::size_t j = i + 1; j < boxes.size() && !overlapping; ++j)
-            overlapping = boxes[i].intersects(boxes[j]);
-    if (overlapping) {
-        // A polygon's group is its piece's representative; polygonsOfPiece is ordered by it,
-        // so the order of the caps follows UnionFind's documented choice of root.
-        UnionFind pieces(surface.vertexCount());
-        for (const Tri& q : surface.triangles) {
-            pieces.unite(q[1], q[0]);
-            pieces.unite(q[2], q[0]);
-        }
-        for (std::size_t i = 0; i < plusPolygons.size(); ++i)
-            group[i] = pieces.find(plusPolygons[i][0]);
-    }
-    std::map<int, std::vector<std::vector<int>>> polygonsOfPiece;
-    for (std::size_t i = 0; i < plusPolygons.size(); ++i) {
-        std::vector<int> local;
-        for (int v : plusPolygons[i])
-            local.push_back(v - first);
-        polygonsOfPiece[group[i]].push_back(std::move(local));
-    }
-    int capCount = 0;
-    for (const auto& [piece, polygons] : polygonsOfPiece) {
-        std::vector<std::array<int, 3>> cap;
-        if (Status s = triangulateInPlane(uv, polygons, cap); !s.ok())
-            return s;
-        // Orient the caps: the + cap must contain every + boundary edge reversed.
-        const int a = polygons[0][0], b = polygons[0][1];
-        bool flip = false;
-        for (const auto& t : cap)
-            for (int e = 0; e < 3; ++e)
-                if (t[e] == a && t[(e + 1) % 3] == b)
-                    flip = true;
-        for (auto t : cap) {
-            if (flip)
-                std::swap(t[1], t[2]);
-            const Tri plus{t[0] + first, t[1] + first, t[2] + first};
-            surface.triangles.push_back(plus);
-            // The - side: the same triangle on the - copies, reversed.
-            surface.triangles.push_back({minusOf[plus[0]], minusOf[plus[2]], minusOf[plus[1]]});
-            surface.cutFaces.push_back(1);
-            surface.cutFaces.push_back(1);
-        }
-        capCount += static_cast<int>(cap.size());
-    }
-    out.capTriangles = 2 * capCount;
-    edit.committed = true;
     return Status::success();
 }
 

@@ -5,87 +5,357 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
-#include <list>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+#include <map>
 #include <string>
+#include <unordered_map>
 
 namespace resect {
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;  ///< the distinct point's index
 struct FaceInfo {
-    int depth = -1;  ///< nesting depth of the region the face lies in
+    bool known = false;
+    int winding = 0;
 };
 using Fbb = CGAL::Triangulation_face_base_with_info_2<FaceInfo, K>;
 using Fb = CGAL::Constrained_triangulation_face_base_2<K, Fbb>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
 
-/// Flood fill from the infinite face: crossing a constrained edge increases the depth.
-void markDepths(Cdt& cdt) {
-    std::list<Cdt::Face_handle> border{cdt.infinite_face()};
-    int depth = 0;
-    while (!border.empty()) {
-        std::list<Cdt::Face_handle> next;
-        for (Cdt::Face_handle start : border) {
-            if (start->info().depth != -1)
+std::uint64_t directedKey(int a, int b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
+/// The loops with their points merged where (u, v) are equal: distinct points, and every loop
+/// edge between distinct points by their indices (loop vertex of its start and end).
+struct MergedLoops {
+    std::vector<Vec2> points;       ///< distinct (u, v)
+    std::vector<int> distinctOf;    ///< per input point used by a loop: its distinct point
+    /// directed (distinct a, distinct b) -> the loop edges (input a, input b) between them
+    std::unordered_map<std::uint64_t, std::vector<std::array<int, 2>>> edges;
+};
+
+MergedLoops merge(const std::vector<Vec2>& points, const std::vector<std::vector<int>>& loops) {
+    MergedLoops m;
+    m.distinctOf.assign(points.size(), -1);
+    std::map<std::pair<double, double>, int> index;
+    for (const auto& loop : loops)
+        for (int i : loop) {
+            if (m.distinctOf[i] >= 0)
                 continue;
-            std::list<Cdt::Face_handle> queue{start};
-            while (!queue.empty()) {
-                Cdt::Face_handle f = queue.front();
-                queue.pop_front();
-                if (f->info().depth != -1)
+            const auto [it, added] = index.emplace(std::pair{points[i].x(), points[i].y()}, int(m.points.size()));
+            if (added)
+                m.points.push_back(points[i]);
+            m.distinctOf[i] = it->second;
+        }
+    for (const auto& loop : loops)
+        for (std::size_t k = 0; k < loop.size(); ++k) {
+            const int a = loop[k], b = loop[(k + 1) % loop.size()];
+            const int da = m.distinctOf[a], db = m.distinctOf[b];
+            if (da != db)
+                m.edges[directedKey(da, db)].push_back({a, b});
+        }
+    return m;
+}
+
+/// Winding number of every face: 0 outside, and crossing a loop edge a -> b from its right to
+/// its left adds one (loops running along the same segment in opposite directions cancel).
+void markWindings(Cdt& cdt, const MergedLoops& m) {
+    std::deque<Cdt::Face_handle> queue{cdt.infinite_face()};
+    cdt.infinite_face()->info() = {true, 0};
+    while (!queue.empty()) {
+        const Cdt::Face_handle f = queue.front();
+        queue.pop_front();
+        for (int i = 0; i < 3; ++i) {
+            const Cdt::Face_handle n = f->neighbor(i);
+            if (n->info().known)
+                continue;
+            int winding = f->info().winding;
+            if (cdt.is_constrained(Cdt::Edge(f, i))) {
+                // The edge (a, b) with f on its left when a = vertex(ccw(i)), b = vertex(cw(i)).
+                const int a = f->vertex(Cdt::ccw(i))->info(), b = f->vertex(Cdt::cw(i))->info();
+                const auto count = [&](int x, int y) {
+                    const auto it = m.edges.find(directedKey(x, y));
+                    return it == m.edges.end() ? 0 : static_cast<int>(it->second.size());
+                };
+                // Crossing from f (left of a -> b) to n: leaving the left of a -> b edges and
+                // entering the left of b -> a edges.
+                winding += count(b, a) - count(a, b);
+            }
+            n->info() = {true, winding};
+            queue.push_back(n);
+        }
+    }
+}
+
+/// The loop vertex for the corner at vertex index i of the inside face f: turning
+/// counter-clockwise around that point from f to the first loop edge (v, w), the face before
+/// it lies right of v -> w, so the loop edge with the region on its side is w -> v (side +1)
+/// or v -> w (side -1).
+int cornerVertex(const Cdt& cdt, const MergedLoops& m, Cdt::Face_handle f, int i, int side) {
+    const Cdt::Vertex_handle v = f->vertex(i);
+    Cdt::Face_handle g = f;
+    for (int guard = 0; guard < 10000; ++guard) {
+        const int iv = g->index(v);
+        const int across = Cdt::ccw(iv);  // the edge (v, g->vertex(cw(iv)))
+        if (cdt.is_constrained(Cdt::Edge(g, across))) {
+            const int dv = v->info(), dw = g->vertex(Cdt::cw(iv))->info();
+            const auto it = side > 0 ? m.edges.find(directedKey(dw, dv)) : m.edges.find(directedKey(dv, dw));
+            if (it != m.edges.end() && !it->second.empty())
+                return side > 0 ? it->second.front()[1] : it->second.front()[0];
+            break;
+        }
+        g = g->neighbor(across);
+        if (g == f)
+            break;
+    }
+    // Not reached for points of a valid loop set: any loop vertex at this point.
+    for (std::size_t k = 0; k < m.distinctOf.size(); ++k)
+        if (m.distinctOf[k] == v->info())
+            return static_cast<int>(k);
+    return -1;
+}
+
+double cross(const Vec2& a, const Vec2& b, const Vec2& c) {
+    return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+}
+
+double signedArea(const std::vector<Vec2>& P, const std::vector<int>& loop) {
+    double a = 0;
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+        const Vec2& p = P[loop[k]];
+        const Vec2& q = P[loop[(k + 1) % loop.size()]];
+        a += p.x() * q.y() - p.y() * q.x();
+    }
+    return 0.5 * a;
+}
+
+/// Winding number of the closed polygon around p (floating point).
+int windingAround(const std::vector<Vec2>& P, const std::vector<int>& loop, const Vec2& p) {
+    int w = 0;
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+        const Vec2& a = P[loop[k]];
+        const Vec2& b = P[loop[(k + 1) % loop.size()]];
+        if (a.y() <= p.y()) {
+            if (b.y() > p.y() && cross(a, b, p) > 0)
+                ++w;
+        } else if (b.y() <= p.y() && cross(a, b, p) < 0) {
+            --w;
+        }
+    }
+    return w;
+}
+
+double triangleQuality(const Vec2& a, const Vec2& b, const Vec2& c) {
+    const double edges = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
+    return edges > 0 ? cross(a, b, c) / edges : 0.0;
+}
+
+/// Ear clipping of one polygon (left of its edges is inside) that never gives up: strictly
+/// convex empty ears first, then flat ones, then the best of whatever is left. Any sequence of
+/// ears triangulates the polygon as a disc, so the cap stays closed and manifold even where its
+/// (u, v) image is degenerate (a spike, a loop touching itself); only its shape suffers there.
+void clipEars(const std::vector<Vec2>& P, std::vector<int> poly, std::vector<std::array<int, 3>>& out) {
+    while (poly.size() > 3) {
+        const int n = static_cast<int>(poly.size());
+        int best = -1;
+        double bestQuality = -std::numeric_limits<double>::infinity();
+        for (int pass = 0; pass < 3 && best < 0; ++pass)
+            for (int i = 0; i < n; ++i) {
+                const int a = poly[(i + n - 1) % n], b = poly[i], c = poly[(i + 1) % n];
+                if (a == c || a == b || b == c)
                     continue;
-                f->info().depth = depth;
-                for (int i = 0; i < 3; ++i) {
-                    Cdt::Face_handle n = f->neighbor(i);
-                    if (n->info().depth != -1)
+                const double turn = cross(P[a], P[b], P[c]);
+                if ((pass == 0 && !(turn > 0)) || (pass == 1 && turn < 0))
+                    continue;
+                bool empty = true;
+                for (int j = 0; j < n && empty && pass < 2; ++j) {
+                    const int x = poly[j];
+                    if (x == a || x == b || x == c || P[x] == P[a] || P[x] == P[b] || P[x] == P[c])
                         continue;
-                    if (cdt.is_constrained(Cdt::Edge(f, i)))
-                        next.push_back(n);
-                    else
-                        queue.push_back(n);
+                    empty = !(cross(P[a], P[b], P[x]) >= 0 && cross(P[b], P[c], P[x]) >= 0 && cross(P[c], P[a], P[x]) >= 0);
+                }
+                if (!empty)
+                    continue;
+                const double q = triangleQuality(P[a], P[b], P[c]);
+                if (q > bestQuality) {
+                    bestQuality = q;
+                    best = i;
                 }
             }
-        }
-        border = std::move(next);
-        ++depth;
+        if (best < 0)
+            best = 0;  // every corner repeats a vertex: cut the first
+        const int a = poly[(best + n - 1) % n], b = poly[best], c = poly[(best + 1) % n];
+        if (a != b && b != c && a != c)
+            out.push_back({a, b, c});
+        poly.erase(poly.begin() + best);
     }
+    if (poly.size() == 3 && poly[0] != poly[1] && poly[1] != poly[2] && poly[0] != poly[2])
+        out.push_back({poly[0], poly[1], poly[2]});
+}
+
+/// The fallback of triangulateCap: holes bridged into the loop around them, then ear clipping.
+void triangulateByEars(const std::vector<Vec2>& P, std::vector<std::vector<int>> loops, int side,
+                       std::vector<std::array<int, 3>>& out) {
+    if (side < 0)
+        for (auto& loop : loops)
+            std::reverse(loop.begin(), loop.end());
+    // A loop inside another is a hole of it; every other loop is an outer boundary, whatever
+    // the sign of its area (a degenerate loop's area says nothing).
+    std::vector<std::vector<int>> outer, holes;
+    for (std::size_t k = 0; k < loops.size(); ++k) {
+        bool inside = false;
+        for (std::size_t j = 0; j < loops.size() && !inside; ++j)
+            inside = j != k && signedArea(P, loops[k]) < 0 && windingAround(P, loops[j], P[loops[k][0]]) != 0;
+        (inside ? holes : outer).push_back(loops[k]);
+    }
+    // Each hole joins the outer loop around it (the smallest that winds around its first point)
+    // by a bridge from its rightmost point to the nearest point of that loop.
+    std::sort(holes.begin(), holes.end(), [&](const auto& x, const auto& y) {
+        const auto right = [&](const auto& l) {
+            double u = -std::numeric_limits<double>::infinity();
+            for (int v : l)
+                u = std::max(u, P[v].x());
+            return u;
+        };
+        return right(x) > right(y);
+    });
+    for (auto& hole : holes) {
+        int owner = 0;
+        double ownerArea = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < outer.size(); ++k)
+            if (windingAround(P, outer[k], P[hole[0]]) != 0 && std::abs(signedArea(P, outer[k])) < ownerArea) {
+                ownerArea = std::abs(signedArea(P, outer[k]));
+                owner = static_cast<int>(k);
+            }
+        std::size_t h = 0;
+        for (std::size_t k = 1; k < hole.size(); ++k)
+            if (P[hole[k]].x() > P[hole[h]].x())
+                h = k;
+        auto& ring = outer[owner];
+        std::size_t o = 0;
+        for (std::size_t k = 1; k < ring.size(); ++k)
+            if ((P[ring[k]] - P[hole[h]]).squaredNorm() < (P[ring[o]] - P[hole[h]]).squaredNorm())
+                o = k;
+        std::vector<int> joined(ring.begin(), ring.begin() + o + 1);
+        for (std::size_t k = 0; k <= hole.size(); ++k)
+            joined.push_back(hole[(h + k) % hole.size()]);
+        joined.push_back(ring[o]);
+        joined.insert(joined.end(), ring.begin() + o + 1, ring.end());
+        ring = std::move(joined);
+    }
+    for (const auto& ring : outer)
+        clipEars(P, ring, out);
+    if (side < 0)
+        return;  // the triangles are counter-clockwise already
+}
+
+/// True if every loop edge a -> b is an edge of exactly one triangle, as a -> b (side +1: the
+/// counter-clockwise triangle on its left) or b -> a (side -1).
+bool coversLoops(const std::vector<std::array<int, 3>>& triangles, const std::vector<std::vector<int>>& loops,
+                 int side) {
+    std::unordered_map<std::uint64_t, int> count;
+    for (const auto& t : triangles)
+        for (int e = 0; e < 3; ++e)
+            ++count[directedKey(t[e], t[(e + 1) % 3])];
+    for (const auto& loop : loops)
+        for (std::size_t k = 0; k < loop.size(); ++k) {
+            const int a = loop[k], b = loop[(k + 1) % loop.size()];
+            const auto it = count.find(side > 0 ? directedKey(a, b) : directedKey(b, a));
+            if (it == count.end() || it->second != 1)
+                return false;
+        }
+    return true;
 }
 
 } // namespace
 
-Status triangulateInPlane(const std::vector<Vec2>& points, const std::vector<std::vector<int>>& loops,
-                          std::vector<std::array<int, 3>>& triangles) {
+Status triangulateCap(const std::vector<Vec2>& points, const std::vector<std::vector<int>>& loops, int side,
+                      std::vector<std::array<int, 3>>& triangles) {
     triangles.clear();
+    for (const auto& loop : loops)
+        for (int i : loop)
+            if (i < 0 || i >= static_cast<int>(points.size()) || !points[i].allFinite())
+                return Status::error("a cut-boundary point has no finite (u, v)");
     try {
+        const MergedLoops m = merge(points, loops);
         Cdt cdt;
-        std::vector<Cdt::Vertex_handle> handle(points.size());
-        for (const auto& loop : loops)
-            for (int i : loop)
-                if (handle[i] == Cdt::Vertex_handle()) {
-                    const std::size_t before = cdt.number_of_vertices();
-                    handle[i] = cdt.insert(K::Point_2(points[i].x(), points[i].y()));
-                    if (cdt.number_of_vertices() == before)
-                        return Status::error("two cut-boundary points map to the same (u, v)");
-                    handle[i]->info() = i;
-                }
+        std::vector<Cdt::Vertex_handle> handle(m.points.size());
+        for (std::size_t d = 0; d < m.points.size(); ++d) {
+            handle[d] = cdt.insert(K::Point_2(m.points[d].x(), m.points[d].y()));
+            handle[d]->info() = static_cast<int>(d);
+        }
         const std::size_t inserted = cdt.number_of_vertices();
-        for (const auto& loop : loops)
-            for (std::size_t k = 0; k < loop.size(); ++k) {
-                const auto a = handle[loop[k]], b = handle[loop[(k + 1) % loop.size()]];
-                if (a != b)
-                    cdt.insert_constraint(a, b);
+        for (const auto& [key, list] : m.edges)
+            cdt.insert_constraint(handle[key >> 32], handle[key & 0xffffffffu]);
+        if (cdt.number_of_vertices() != inserted && !std::getenv("RESECT_DEBUG")) {
+            triangulateByEars(points, loops, side, triangles);
+            return Status::success();
+        }
+        if (cdt.number_of_vertices() != inserted) {
+            if (std::getenv("RESECT_DEBUG")) {
+                std::fprintf(stderr, "crossing: %zu loops, %zu points\n", loops.size(), m.points.size());
+                for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+                    const int d = v->info();
+                    if (d >= 0 && d < int(m.points.size()) && m.points[d].x() == v->point().x() && m.points[d].y() == v->point().y())
+                        continue;
+                    std::fprintf(stderr, "  new vertex at (%.17g %.17g)\n", v->point().x(), v->point().y());
+                    // loop edges near it
+                    for (const auto& [key, list] : m.edges) {
+                        const Vec2 a = m.points[key >> 32], b = m.points[key & 0xffffffffu];
+                        const Vec2 q(v->point().x(), v->point().y());
+                        const double t = (q - a).dot(b - a) / (b - a).squaredNorm();
+                        const Vec2 c = a + std::clamp(t, 0.0, 1.0) * (b - a);
+                        if ((c - q).norm() < 1e-9)
+                            std::fprintf(stderr, "    edge %d-%d (%.17g %.17g)-(%.17g %.17g) loop edges %zu first %d-%d\n", int(key >> 32), int(key & 0xffffffffu), a.x(), a.y(), b.x(), b.y(), list.size(), list[0][0], list[0][1]);
+                    }
+                }
             }
-        if (cdt.number_of_vertices() != inserted)
-            return Status::error("cut boundary crosses itself in the parameter plane");
+            return Status::error("the cut boundary crosses itself in the sweep's parameter plane");
+        }
+        // A loop point exactly on another loop's edge splits that constraint; the windings
+        // below count whole loop edges, so that is refused too.
+        for (const auto& [key, list] : m.edges)
+            if (!cdt.is_edge(handle[key >> 32], handle[key & 0xffffffffu]) && !std::getenv("RESECT_DEBUG")) {
+                triangles.clear();
+                triangulateByEars(points, loops, side, triangles);
+                return Status::success();
+            } else if (!cdt.is_edge(handle[key >> 32], handle[key & 0xffffffffu])) {
+                if (std::getenv("RESECT_DEBUG")) {
+                    const Vec2 a = m.points[key >> 32], b = m.points[key & 0xffffffffu];
+                    std::fprintf(stderr, "edge %d-%d (%.17g %.17g)-(%.17g %.17g) loops %zu points %zu\n", int(key >> 32), int(key & 0xffffffffu), a.x(), a.y(), b.x(), b.y(), loops.size(), m.points.size());
+                    for (std::size_t d = 0; d < m.points.size(); ++d) {
+                        const Vec2 p = m.points[d];
+                        const double cross = (b - a).x() * (p - a).y() - (b - a).y() * (p - a).x();
+                        if (std::abs(cross) < 1e-12 && (p - a).dot(b - a) > 0 && (p - b).dot(a - b) > 0)
+                            std::fprintf(stderr, "  on it: %zu (%.17g %.17g)\n", d, p.x(), p.y());
+                    }
+                }
+                return Status::error("a cut-boundary point lies on another boundary edge in the sweep's parameter plane");
+            }
         for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
-            f->info().depth = -1;
-        markDepths(cdt);
+            f->info() = {};
+        markWindings(cdt, m);
         for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-            if (f->info().depth % 2 == 0)
+            if (f->info().winding * side <= 0)
                 continue;
-            triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
+            std::array<int, 3> t{};
+            for (int i = 0; i < 3; ++i)
+                t[i] = cornerVertex(cdt, m, f, i, side);
+            triangles.push_back(t);
+        }
+        // Every loop edge must border exactly one triangle, on the region's side; where the
+        // (u, v) image is degenerate (collinear or coincident loop points) it may not.
+        if (!coversLoops(triangles, loops, side)) {
+            triangles.clear();
+            triangulateByEars(points, loops, side, triangles);
         }
     } catch (const std::exception& e) {
         return Status::error(std::string("triangulating the cut face failed: ") + e.what());
