@@ -14,6 +14,52 @@
 namespace resect {
 namespace {
 
+/// The point deepest inside every face's inner half-space of a closed polyhedron (faces
+/// oriented outward, corners through `at`): the centre of the largest ball in its kernel
+/// (Chebyshev centre), from the small linear programme max r subject to n_i . x + r <= n_i . p_i
+/// (unit outward normals n_i), solved by trying every vertex of its feasible region (four
+/// active constraints; the polyhedra of a cut tet have at most a dozen faces). False if the
+/// kernel is empty or flat (the polyhedron is not star-shaped).
+template <class At> bool kernelPoint(const std::vector<Tri>& faces, const At& at, Vec3& out) {
+    std::vector<Eigen::Vector4d> rows;  // (n, 1) with right-hand side n . p
+    std::vector<double> rhs;
+    for (const Tri& f : faces) {
+        Vec3 n = (at(f[1]) - at(f[0])).cross(at(f[2]) - at(f[0]));
+        const double len = n.norm();
+        if (!(len > 0))
+            continue;
+        n /= len;
+        rows.emplace_back(n.x(), n.y(), n.z(), 1.0);
+        rhs.push_back(n.dot(at(f[0])));
+    }
+    const int m = static_cast<int>(rows.size());
+    double bestR = 0;
+    bool found = false;
+    for (int a = 0; a < m; ++a)
+        for (int b = a + 1; b < m; ++b)
+            for (int c = b + 1; c < m; ++c)
+                for (int d = c + 1; d < m; ++d) {
+                    Eigen::Matrix4d A;
+                    A << rows[a].transpose(), rows[b].transpose(), rows[c].transpose(), rows[d].transpose();
+                    const Eigen::Vector4d y(rhs[a], rhs[b], rhs[c], rhs[d]);
+                    const Eigen::FullPivLU<Eigen::Matrix4d> lu(A);
+                    if (!lu.isInvertible())
+                        continue;
+                    const Eigen::Vector4d x = lu.solve(y);
+                    if (!(x[3] > bestR) || !x.allFinite())
+                        continue;
+                    bool feasible = true;
+                    for (int i = 0; i < m && feasible; ++i)
+                        feasible = rows[i].dot(x) <= rhs[i] + 1e-12 * (std::abs(rhs[i]) + 1);
+                    if (feasible) {
+                        bestR = x[3];
+                        out = x.head<3>();
+                        found = true;
+                    }
+                }
+    return found;
+}
+
 struct FaceHash {
     std::size_t operator()(const Tri& f) const {
         std::uint64_t h = static_cast<std::uint32_t>(f[0]);
@@ -383,9 +429,24 @@ Status Decomposer::cone(const std::vector<SideTri>& tris, std::vector<Tet>& tets
         ref /= static_cast<double>(verts.size());
         pos /= static_cast<double>(verts.size());
         vel /= static_cast<double>(verts.size());
-        for (const SideTri& t : tris)
-            if (!behind(t.v, ref, pos))
+        const auto seesAll = [&](const Vec3& r, const Vec3& p) {
+            for (const SideTri& t : tris)
+                if (!behind(t.v, r, p))
+                    return false;
+            return true;
+        };
+        if (!seesAll(ref, pos)) {
+            // A curved cut can leave a side whose vertex mean does not see every face: the
+            // centre of its kernel (the intersection of the faces' inner half-spaces), found in
+            // each configuration.
+            std::vector<Tri> faces;
+            for (const SideTri& t : tris)
+                faces.push_back(t.v);
+            const bool found = kernelPoint(faces, [&](int v) -> const Vec3& { return m_mesh.ref(v); }, ref) &&
+                               kernelPoint(faces, [&](int v) -> const Vec3& { return m_mesh.pos(v); }, pos);
+            if (!found || !seesAll(ref, pos))
                 return Status::error("a cut polyhedron cannot be split into positive tets");
+        }
         apex = m_mesh.addNode(ref, pos);
         m_mesh.velocities()[apex] = vel;
         ++m_out.steinerPoints;

@@ -235,8 +235,34 @@ public:
         if (Status s = closeCaps(loops); !s.ok())
             return s;
         finishCounts();
+        if (std::getenv("RESECT_DEBUG6"))
+            debugManifold();
         m_edit.committed = true;
         return Status::success();
+    }
+
+    void debugManifold() {
+        std::map<std::pair<int, int>, std::vector<int>> directedTris;
+        std::vector<int> tris = m_touched;
+        for (int t = m_edit.triangles; t < m_s.triangleCount(); ++t)
+            tris.push_back(t);
+        std::sort(tris.begin(), tris.end());
+        tris.erase(std::unique(tris.begin(), tris.end()), tris.end());
+        for (int t : tris) {
+            const Tri& q = m_s.triangles[t];
+            for (int e = 0; e < 3; ++e)
+                directedTris[{q[e], q[(e + 1) % 3]}].push_back(t);
+        }
+        for (const auto& [e, list] : directedTris) {
+            if (list.size() <= 1)
+                continue;
+            std::fprintf(stderr, "edge %d->%d in %zu triangles (shared %d %d, origins %d %d):", e.first, e.second, list.size(), int(m_shared.count(e.first)), int(m_shared.count(e.second)), originOf(e.first), originOf(e.second));
+            for (int t : list) {
+                const Tri& q = m_s.triangles[t];
+                std::fprintf(stderr, " [%d (%d %d %d) %s side %d]", t, q[0], q[1], q[2], t >= m_capStart ? ((t - m_capStart) % 2 == 0 ? "cap+" : "cap-") : "surface", m_side.count(t) ? m_side[t] : 9);
+            }
+            std::fprintf(stderr, "\n");
+        }
     }
 
 private:
@@ -1299,6 +1325,7 @@ private:
     }
 
     Status closeCaps(const std::vector<std::vector<int>>& loops) {
+        m_capStart = m_s.triangleCount();
         if (loops.empty())
             return Status::success();
         findMates();
@@ -1444,6 +1471,7 @@ private:
     std::unordered_map<std::uint64_t, int> m_edgeSide;    ///< boundary half-edge -> side
     std::unordered_map<int, int> m_mate;                  ///< + copy -> - copy
     std::unordered_set<int> m_inner;                      ///< new vertices inside a piece (fan centres)
+    int m_capStart = 0;                                   ///< first cap triangle
     std::unordered_set<std::uint64_t> m_surfaceEdges;     ///< edges of the touched triangles
     std::unordered_map<std::uint64_t, int> m_segmentTriangle;  ///< cut segment -> the sweep triangle it lies in
     std::unordered_map<int, int> m_innerSide;             ///< their side

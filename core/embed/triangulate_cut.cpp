@@ -137,22 +137,6 @@ double signedArea(const std::vector<Vec2>& P, const std::vector<int>& loop) {
     return 0.5 * a;
 }
 
-/// Winding number of the closed polygon around p (floating point).
-int windingAround(const std::vector<Vec2>& P, const std::vector<int>& loop, const Vec2& p) {
-    int w = 0;
-    for (std::size_t k = 0; k < loop.size(); ++k) {
-        const Vec2& a = P[loop[k]];
-        const Vec2& b = P[loop[(k + 1) % loop.size()]];
-        if (a.y() <= p.y()) {
-            if (b.y() > p.y() && cross(a, b, p) > 0)
-                ++w;
-        } else if (b.y() <= p.y() && cross(a, b, p) < 0) {
-            --w;
-        }
-    }
-    return w;
-}
-
 double triangleQuality(const Vec2& a, const Vec2& b, const Vec2& c) {
     const double edges = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
     return edges > 0 ? cross(a, b, c) / edges : 0.0;
@@ -201,60 +185,29 @@ void clipEars(const std::vector<Vec2>& P, std::vector<int> poly, std::vector<std
         out.push_back({poly[0], poly[1], poly[2]});
 }
 
-/// The fallback of triangulateCap: holes bridged into the loop around them, then ear clipping.
+/// The fallback of triangulateCap, for a (u, v) image too degenerate for the constrained
+/// triangulation (a spike, a loop touching itself, loops crossing by rounding): every loop is
+/// closed on its own by ear clipping. Each loop becomes a disc, so the cap is closed and
+/// manifold whatever the geometry; a hole is then covered twice with opposite orientations,
+/// which adds no volume.
 void triangulateByEars(const std::vector<Vec2>& P, std::vector<std::vector<int>> loops, int side,
                        std::vector<std::array<int, 3>>& out) {
-    if (side < 0)
-        for (auto& loop : loops)
+    for (auto& loop : loops) {
+        if (side < 0)
             std::reverse(loop.begin(), loop.end());
-    // A loop inside another is a hole of it; every other loop is an outer boundary, whatever
-    // the sign of its area (a degenerate loop's area says nothing).
-    std::vector<std::vector<int>> outer, holes;
-    for (std::size_t k = 0; k < loops.size(); ++k) {
-        bool inside = false;
-        for (std::size_t j = 0; j < loops.size() && !inside; ++j)
-            inside = j != k && signedArea(P, loops[k]) < 0 && windingAround(P, loops[j], P[loops[k][0]]) != 0;
-        (inside ? holes : outer).push_back(loops[k]);
+        // A hole runs clockwise: clip it as its own (counter-clockwise) disc, then turn its
+        // triangles back so that they bound the hole's edges from the correct side.
+        const bool hole = signedArea(P, loop) < 0;
+        if (hole)
+            std::reverse(loop.begin(), loop.end());
+        std::vector<std::array<int, 3>> disc;
+        clipEars(P, loop, disc);
+        for (auto& t : disc) {
+            if (hole)
+                std::swap(t[1], t[2]);
+            out.push_back(t);
+        }
     }
-    // Each hole joins the outer loop around it (the smallest that winds around its first point)
-    // by a bridge from its rightmost point to the nearest point of that loop.
-    std::sort(holes.begin(), holes.end(), [&](const auto& x, const auto& y) {
-        const auto right = [&](const auto& l) {
-            double u = -std::numeric_limits<double>::infinity();
-            for (int v : l)
-                u = std::max(u, P[v].x());
-            return u;
-        };
-        return right(x) > right(y);
-    });
-    for (auto& hole : holes) {
-        int owner = 0;
-        double ownerArea = std::numeric_limits<double>::infinity();
-        for (std::size_t k = 0; k < outer.size(); ++k)
-            if (windingAround(P, outer[k], P[hole[0]]) != 0 && std::abs(signedArea(P, outer[k])) < ownerArea) {
-                ownerArea = std::abs(signedArea(P, outer[k]));
-                owner = static_cast<int>(k);
-            }
-        std::size_t h = 0;
-        for (std::size_t k = 1; k < hole.size(); ++k)
-            if (P[hole[k]].x() > P[hole[h]].x())
-                h = k;
-        auto& ring = outer[owner];
-        std::size_t o = 0;
-        for (std::size_t k = 1; k < ring.size(); ++k)
-            if ((P[ring[k]] - P[hole[h]]).squaredNorm() < (P[ring[o]] - P[hole[h]]).squaredNorm())
-                o = k;
-        std::vector<int> joined(ring.begin(), ring.begin() + o + 1);
-        for (std::size_t k = 0; k <= hole.size(); ++k)
-            joined.push_back(hole[(h + k) % hole.size()]);
-        joined.push_back(ring[o]);
-        joined.insert(joined.end(), ring.begin() + o + 1, ring.end());
-        ring = std::move(joined);
-    }
-    for (const auto& ring : outer)
-        clipEars(P, ring, out);
-    if (side < 0)
-        return;  // the triangles are counter-clockwise already
 }
 
 /// True if every loop edge a -> b is an edge of exactly one triangle, as a -> b (side +1: the
@@ -265,6 +218,9 @@ bool coversLoops(const std::vector<std::array<int, 3>>& triangles, const std::ve
     for (const auto& t : triangles)
         for (int e = 0; e < 3; ++e)
             ++count[directedKey(t[e], t[(e + 1) % 3])];
+    for (const auto& [key, n] : count)
+        if (n > 1)
+            return false;  // two triangles on one side of an edge: not a disc
     for (const auto& loop : loops)
         for (std::size_t k = 0; k < loop.size(); ++k) {
             const int a = loop[k], b = loop[(k + 1) % loop.size()];

@@ -85,6 +85,22 @@ private slots:
         QCOMPARE(sha256(scenario), before);  // the input is untouched
     }
 
+    /// The bundled ten-scoop resection (issue 15): every pass cuts the tets and the embedded
+    /// surface, and the run meets its expectations.
+    void tenScoopResectionReplays() {
+        QTemporaryDir dir;
+        const QString report = dir.filePath("report.json");
+        const Run r = runCli({"run", QString(RESECT_SOURCE_DIR) + "/resources/scenarios/polyp-resection-10.json",
+                              "--report", report});
+        QVERIFY2(r.code == 0, qPrintable(r.err + r.out));
+        const QJsonObject rep = readJsonFile(report);
+        QVERIFY(rep["passed"].toBool());
+        const QJsonObject tissue = rep["tissues"].toArray().first().toObject();
+        QVERIFY(tissue["pieces"].toInt() >= 4);
+        QCOMPARE(tissue["inverted"].toInt(), 0);
+        QVERIFY(tissue["cut"].toObject()["surface_cap_triangles"].toInt() > 0);
+    }
+
     void failingExpectationExitsWith3() {
         QTemporaryDir dir;
         const QString scenario = fastPolyp(dir.path(), [](QJsonObject& s) {

@@ -1,0 +1,187 @@
+// Regression tests for the surface cut failures a whole resection used to hit (issue 15), each
+// on a small literal surface built to reproduce the configuration behind one failure message:
+//  - "cut boundary crosses itself in the parameter plane": a curved sweep crossing a large
+//    triangle (an earlier cap) so that the cut inside it bends far from the chord between its
+//    ends; and a sweep crossing an edge twice (its crossings used to be discarded);
+//  - "two cut-boundary points map to the same (u, v)": a cut across the coincident caps of two
+//    pieces an earlier cut left touching;
+//  - "the cut boundary is not a set of simple loops (non-manifold cut)": a sweep passing
+//    exactly through a surface vertex (an earlier cut vertex), and one passing within rounding
+//    of it;
+//  - partial cuts whose border crosses the surface several times (mouse-like strokes).
+// After every cut the surface must be closed and 2-manifold, the pieces' volumes must add up to
+// the volume before, and cut faces must carry their (u, v).
+#include "core/embed/cut_surface.h"
+#include "core/mesher/procedural_surfaces.h"
+#include "surface_checks.h"
+
+#include <QTest>
+
+#include <cmath>
+
+using namespace resect;
+
+namespace {
+
+SweepSurface sweepOf(const std::vector<std::vector<Vec3>>& curves) {
+    SweepSurface s;
+    const Status st = SweepSurface::fromCurves(curves, s);
+    if (!st.ok())
+        qFatal("bad sweep: %s", st.message().c_str());
+    return s;
+}
+
+/// A flat sweep through point p (exactly: p is its middle vertex), spanned by a and b.
+SweepSurface planeThrough(const Vec3& p, const Vec3& a, const Vec3& b) {
+    return sweepOf({{p - a - b, p - b, p + a - b}, {p - a, p, p + a}, {p - a + b, p + b, p + a + b}});
+}
+
+/// Cuts and checks the invariants; returns the cut's counts.
+SurfaceCut cutAndCheck(TriangleSurface& s, const SweepSurface& sweep) {
+    const double before = enclosedVolume(s);
+    SurfaceCut cut;
+    const Status st = cutSurface(s, nullptr, sweep, cut);
+    if (!st.ok())
+        QTest::qFail(st.message().c_str(), __FILE__, __LINE__);
+    const QString manifold = testing::manifoldProblems(s);
+    if (!manifold.isEmpty())
+        QTest::qFail(qPrintable(manifold), __FILE__, __LINE__);
+    const double after = enclosedVolume(s);
+    if (std::abs(after - before) > 1e-9 * std::abs(before))
+        QTest::qFail(qPrintable(QString("volume %1 -> %2").arg(before, 0, 'g', 17).arg(after, 0, 'g', 17)), __FILE__, __LINE__);
+    const QString uv = testing::capUvProblems(s);
+    if (!uv.isEmpty())
+        QTest::qFail(qPrintable(uv), __FILE__, __LINE__);
+    return cut;
+}
+
+int pieceCount(const TriangleSurface& s) {
+    std::vector<int> parent(s.vertexCount());
+    for (int i = 0; i < s.vertexCount(); ++i)
+        parent[i] = i;
+    const auto find = [&](int x) {
+        while (parent[x] != x)
+            x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    for (const Tri& t : s.triangles) {
+        parent[find(t[1])] = find(t[0]);
+        parent[find(t[2])] = find(t[0]);
+    }
+    std::vector<bool> used(s.vertexCount(), false), root(s.vertexCount(), false);
+    for (const Tri& t : s.triangles)
+        for (int v : t)
+            used[v] = true;
+    int n = 0;
+    for (int v = 0; v < s.vertexCount(); ++v)
+        if (used[v] && !root[find(v)]) {
+            root[find(v)] = true;
+            ++n;
+        }
+    return n;
+}
+
+} // namespace
+
+class TestCutSurfaceRegressions : public QObject {
+    Q_OBJECT
+private slots:
+    /// A tetrahedron (four large triangles) and a sweep bent like a loop scoop: the cut inside
+    /// each face curves far from the chord between its ends, and in (u, v) those chords
+    /// crossed ("cut boundary crosses itself in the parameter plane").
+    void curvedCutAcrossLargeTriangles() {
+        TriangleSurface s;
+        s.positions = {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {0, 0, 10}};
+        s.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+        std::vector<std::vector<Vec3>> curves;
+        for (int i = 0; i < 6; ++i) {
+            const double y = -2 + 2.8 * i, dip = 2.5 * std::sin(M_PI * i / 5);
+            std::vector<Vec3> c;
+            for (int j = 0; j <= 8; ++j) {
+                const double a = M_PI * j / 8;
+                c.emplace_back(2 + 6 * std::cos(a), y, 6 - dip - 3 * std::sin(a));
+            }
+            curves.push_back(c);
+        }
+        const SurfaceCut cut = cutAndCheck(s, sweepOf(curves));
+        QVERIFY(cut.splitEdges > 0);
+        QVERIFY(cut.capTriangles > 0);
+        QCOMPARE(pieceCount(s), 2);
+    }
+
+    /// A sweep bent so that it crosses one edge of a box twice (the two crossings used to be
+    /// discarded, and the cut in the triangles beside it could not be followed).
+    void edgeCrossedTwice() {
+        TriangleSurface s = makeBox(Vec3(0, 0, 0), Vec3(4, 4, 4));
+        // A V-shaped stroke: down through the top face and up again, along y.
+        const SweepSurface sweep = sweepOf({{{-1, -1, 5}, {2, -1, 2.5}, {5, -1, 5}},
+                                            {{-1, 5, 5.2}, {2, 5, 2.7}, {5, 5, 5.2}}});
+        const SurfaceCut cut = cutAndCheck(s, sweep);
+        // The top face's edges along x are crossed twice each (at x = 0.2 and 3.8): both
+        // crossings split, each into a copy per side.
+        QVERIFY(cut.splitEdges >= 3);
+        QVERIFY(s.vertexCount() - cut.firstNewVertex >= 12);
+        QCOMPARE(pieceCount(s), 2);  // the wedge under the V comes off
+    }
+
+    /// Two cuts leave two pieces touching along coincident caps; a third cut crosses both caps
+    /// at the same points ("two cut-boundary points map to the same (u, v)").
+    void cutAcrossCoincidentCaps() {
+        TriangleSurface s = makeEllipsoid(Vec3(10, 8, 6), 16, 24);
+        cutAndCheck(s, planeThrough(Vec3(0.3, 0.1, 0.2), Vec3(15, 0, 0.5), Vec3(0, 15, 0.7)));
+        QCOMPARE(pieceCount(s), 2);
+        cutAndCheck(s, planeThrough(Vec3(0.2, 0.4, 0.1), Vec3(0.3, 0, 15), Vec3(0, 15, 0.4)));
+        QCOMPARE(pieceCount(s), 4);
+        cutAndCheck(s, planeThrough(Vec3(0.1, 0.3, 0.2), Vec3(15, 0.2, 0), Vec3(0.1, 0.2, 15)));
+        QCOMPARE(pieceCount(s), 8);
+    }
+
+    /// A plane exactly through a surface vertex: the cut passes through the vertex, which is
+    /// split into one copy per side ("the cut boundary is not a set of simple loops").
+    void sweepThroughAVertex() {
+        TriangleSurface s = makeBox(Vec3(0, 0, 0), Vec3(1, 1, 1));
+        // Through the corner (1, 0, 0) only: (x - 1) + 2 y + 3 z = 0 meets no other corner.
+        const Vec3 n(1, 2, 3), a = n.unitOrthogonal() * 5, b = n.normalized().cross(a);
+        const SurfaceCut cut = cutAndCheck(s, planeThrough(Vec3(1, 0, 0), a, b));
+        QCOMPARE(pieceCount(s), 2);
+        QVERIFY(cut.capTriangles > 0);
+    }
+
+    /// The same through an earlier cut vertex: cut, then a plane through one of the new
+    /// vertices (exactly on both sweeps, with a copy on each side of the first cut).
+    void sweepThroughAnEarlierCutVertex() {
+        TriangleSurface s = makeEllipsoid(Vec3(10, 8, 6), 16, 24);
+        SurfaceCut first = cutAndCheck(s, planeThrough(Vec3(0.3, 0.1, 0.2), Vec3(15, 0, 0.5), Vec3(0, 15, 0.7)));
+        QVERIFY(s.vertexCount() > first.firstNewVertex);
+        const Vec3 p = s.positions[first.firstNewVertex + 3];
+        cutAndCheck(s, planeThrough(p, Vec3(0.4, 0, 15), Vec3(0, 15, 0.3)));
+        QVERIFY(pieceCount(s) >= 3);
+    }
+
+    /// A sweep passing within rounding of a vertex (not exactly through it): the crossings next
+    /// to the vertex are moved onto it instead of making pieces too small to tell apart.
+    void sweepWithinRoundingOfAVertex() {
+        TriangleSurface s = makeBox(Vec3(0, 0, 0), Vec3(1, 1, 1));
+        const Vec3 n(1, 2, 3), a = n.unitOrthogonal() * 5, b = n.normalized().cross(a);
+        cutAndCheck(s, planeThrough(Vec3(1, 0, 0) + 1e-14 * n, a, b));
+        QCOMPARE(pieceCount(s), 2);
+    }
+
+    /// A stroke whose loop stays inside the body at both ends (the sweep's border runs inside
+    /// it): the surface is slit, not separated. Here a flat sweep x in [-3, 3] across an
+    /// ellipsoid slits its front and back; the cap is the strip between the two slits, closed
+    /// by joining the two lips along the sweep's borders x = -3 and x = 3.
+    void partialCutWithTwoSlits() {
+        TriangleSurface s = makeEllipsoid(Vec3(10, 8, 6), 16, 24);
+        const SweepSurface sweep = sweepOf({{{-3, -20, 0.2}, {0, -20, 0.3}, {3, -20, 0.2}},
+                                            {{-3, 20, 0.4}, {0, 20, 0.5}, {3, 20, 0.4}}});
+        const SurfaceCut cut = cutAndCheck(s, sweep);
+        QCOMPARE(pieceCount(s), 1);      // slits, not a separation
+        QCOMPARE(cut.faceVertices, 4);   // two ends of each slit
+        QCOMPARE(cut.loops, 2);          // one around each slit
+        QVERIFY(cut.capTriangles > 0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCutSurfaceRegressions)
+#include "test_cut_surface_regressions.moc"
