@@ -6,8 +6,6 @@
 #include "core/sweep/intersect_segment.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -235,37 +233,10 @@ public:
         if (Status s = closeCaps(loops); !s.ok())
             return s;
         finishCounts();
-        if (std::getenv("RESECT_DEBUG6"))
-            debugManifold();
         m_edit.committed = true;
         return Status::success();
     }
 
-    void debugManifold() {
-        std::map<std::pair<int, int>, std::vector<int>> directedTris;
-        std::vector<int> tris = m_touched;
-        for (int t = m_edit.triangles; t < m_s.triangleCount(); ++t)
-            tris.push_back(t);
-        std::sort(tris.begin(), tris.end());
-        tris.erase(std::unique(tris.begin(), tris.end()), tris.end());
-        for (int t : tris) {
-            const Tri& q = m_s.triangles[t];
-            for (int e = 0; e < 3; ++e)
-                directedTris[{q[e], q[(e + 1) % 3]}].push_back(t);
-        }
-        for (const auto& [e, list] : directedTris) {
-            if (list.size() <= 1)
-                continue;
-            std::fprintf(stderr, "edge %d->%d in %zu triangles (shared %d %d, origins %d %d):", e.first, e.second, list.size(), int(m_shared.count(e.first)), int(m_shared.count(e.second)), originOf(e.first), originOf(e.second));
-            for (int t : list) {
-                const Tri& q = m_s.triangles[t];
-                std::fprintf(stderr, " [%d (%d %d %d) %s side %d]", t, q[0], q[1], q[2], t >= m_capStart ? ((t - m_capStart) % 2 == 0 ? "cap+" : "cap-") : "surface", m_side.count(t) ? m_side[t] : 9);
-            }
-            std::fprintf(stderr, "\n");
-        }
-    }
-
-private:
     // --- step 1: triangles near the sweep ---
 
     /// Triangles that can touch the sweep: not all three corners strictly beyond one face of
@@ -638,8 +609,6 @@ private:
                 continue;
             std::size_t b = 0;
             const TraceEnd reached = trace(T, points, a, used, b, path, visited);
-            if (reached == TraceEnd::Failed && std::getenv("RESECT_DEBUG"))
-                std::fprintf(stderr, "trace failed in triangle %d from point %zu of %zu (vertex %d, %zu sweep tris)\n", t, a, points.size(), points[a].vertex, points[a].sweepTriangles.size());
             if (reached != TraceEnd::Reached)
                 continue;
             used[a] = used[b] = true;
@@ -672,33 +641,6 @@ private:
             if (!partial) {
                 polylines.push_back({points[0].vertex, points[1].vertex});
                 segmentTriangle[undirected(points[0].vertex, points[1].vertex)] = points[0].sweepTriangles.front();
-            }
-            if (std::getenv("RESECT_DEBUG")) {
-                std::fprintf(stderr, "chord in triangle %d (%d %d %d), points %d [%zu tris: %d] %d [%zu tris: %d], partial %d, len %g\n", t, q[0], q[1], q[2],
-                             points[0].vertex, points[0].sweepTriangles.size(), points[0].sweepTriangles[0], points[1].vertex, points[1].sweepTriangles.size(), points[1].sweepTriangles[0], int(partial),
-                             (P[points[0].vertex] - P[points[1].vertex]).norm());
-                std::vector<bool> none2(points.size(), false);
-                std::size_t bb = 0;
-                for (int from = 0; from < 2; ++from) {
-                    const auto& S = m_sweep.triangles();
-                    for (int start : points[from].sweepTriangles) {
-                        int cur = start;
-                        std::fprintf(stderr, "  from %d start %d:", from, start);
-                        int entry = -1;
-                        for (int step = 0; step < 50; ++step) {
-                            int exits = 0, exit = -1; Pierce at;
-                            for (int e = 0; e < 3; ++e) { if (e == entry) continue; const int a = S[cur][e], b = S[cur][(e + 1) % 3]; if (pierce(T, std::min(a, b), std::max(a, b), at)) { ++exits; exit = e; } }
-                            std::fprintf(stderr, " [%d exits %d]", cur, exits);
-                            if (exits != 1) break;
-                            const int nx = m_neighbour[cur][exit]; if (nx < 0) { std::fprintf(stderr, " border"); break; }
-                            const int a = S[cur][exit], b = S[cur][(exit + 1) % 3]; entry = -1;
-                            for (int e = 0; e < 3; ++e) if (undirected(S[nx][e], S[nx][(e + 1) % 3]) == undirected(a, b)) entry = e;
-                            cur = nx;
-                        }
-                        std::fprintf(stderr, "\n");
-                    }
-                }
-                (void)bb; (void)none2;
             }
         }
 
@@ -768,35 +710,6 @@ private:
             for (int v : polygons[k])
                 if (v < m_first && !m_cutVertices.count(v) && side[k] == 0)
                     side[k] = cornerSide(q, v);
-        if (std::getenv("RESECT_DEBUG4"))
-            for (const auto& line : polylines)
-              for (std::size_t sg = 0; sg + 1 < line.size(); ++sg) {
-                int a = -1, b = -1;
-                for (std::size_t k = 0; k < polygons.size(); ++k) {
-                    const auto& pg = polygons[k];
-                    for (std::size_t i = 0; i < pg.size(); ++i) {
-                        const int x = pg[i], y = pg[(i + 1) % pg.size()];
-                        if ((x == line[sg] && y == line[sg + 1]) || (y == line[sg] && x == line[sg + 1]))
-                            (a < 0 ? a : b) = int(k);
-                    }
-                }
-                if (a >= 0 && b >= 0 && side[a] == side[b]) {
-                    const auto it = segmentTriangle.find(undirected(line[sg], line[sg + 1]));
-                    const int S = it == segmentTriangle.end() ? -1 : it->second;
-                    if (S >= 0) {
-                        const auto& V = m_sweep.vertices(); const Tri& st = m_sweep.triangles()[S];
-                        const Vec3 sn = (V[st[1]] - V[st[0]]).cross(V[st[2]] - V[st[0]]).normalized();
-                        const auto dist = [&](const Vec3& x) { return sn.dot(x - V[st[0]]); };
-                        std::fprintf(stderr, "  dists a %g b %g corners %g %g %g, seg len %g, cos(T,S) %g\n", dist(P[line[sg]]), dist(P[line[sg+1]]), dist(P[q[0]]), dist(P[q[1]]), dist(P[q[2]]), (P[line[sg]] - P[line[sg+1]]).norm(), std::abs(sn.dot(normal.normalized())));
-                    }
-                    std::fprintf(stderr, "seg tri %d flat %d |n| %g longest %g probes %d %d\n", S, int(flat), normal.norm(), longest,
-                                 S >= 0 ? pieceSide(S, P[line[sg]], P[line[sg + 1]], normal) : 9, S >= 0 ? pieceSide(S, P[line[sg + 1]], P[line[sg]], normal) : 9);
-                    std::fprintf(stderr, "same side %d in triangle %d (%d %d %d):", side[a], t, q[0], q[1], q[2]);
-                    for (const auto& poly : polygons) { std::fprintf(stderr, " ["); for (int v : poly) std::fprintf(stderr, " %d", v); std::fprintf(stderr, "]"); }
-                    for (const auto& l2 : polylines) { std::fprintf(stderr, " line"); for (int v : l2) std::fprintf(stderr, " %d", v); }
-                    std::fprintf(stderr, "\n");
-                }
-              }
         for (std::size_t round = 0; round < polygons.size(); ++round)
             for (std::size_t l = 0; l < across.size(); ++l) {
                 auto [a, b] = across[l];
@@ -1026,13 +939,6 @@ private:
             }
             std::vector<int> label;
             const int count = groups.compact(label);
-            if (std::getenv("RESECT_DEBUG") && (c == 5326 || c == 5327)) {
-                std::fprintf(stderr, "vertex %d: %d groups, cutVertex %d\n", c, count, int(m_cutVertices.count(c)));
-                for (int i = 0; i < int(tris.size()); ++i) {
-                    const Tri& q = m_s.triangles[tris[i]];
-                    std::fprintf(stderr, "  tri %d (%d %d %d) group %d side %d\n", tris[i], q[0], q[1], q[2], label[i], m_side.count(tris[i]) ? m_side[tris[i]] : 9);
-                }
-            }
             std::vector<int> groupSide(count, 0);
             for (int i = 0; i < static_cast<int>(tris.size()); ++i)
                 if (auto it = m_side.find(tris[i]); it != m_side.end() && groupSide[label[i]] == 0)
@@ -1151,15 +1057,15 @@ private:
     /// next): the cap then covers the sweep up to its border, even when the border crosses the
     /// surface several times.
     Status plusPolygons(const std::vector<std::vector<int>>& loops, std::vector<std::vector<int>>& out) {
+        return sidePolygons(loops, 1, out);
+    }
+
+    /// The same for either side: the - boundary runs clockwise around its cap, so its lips
+    /// are joined going clockwise along the border.
+    Status sidePolygons(const std::vector<std::vector<int>>& loops, int sign, std::vector<std::vector<int>>& out) {
         std::vector<std::vector<int>> arcs;
         for (const auto& loop : loops) {
             const int n = static_cast<int>(loop.size());
-            if (const char* watch = std::getenv("RESECT_WATCH"); watch && (std::count(loop.begin(), loop.end(), std::atoi(watch)) || (std::getenv("RESECT_SMALL") && n <= 3))) {
-                std::fprintf(stderr, "loop (%d):", n);
-                for (int i = 0; i < n; ++i)
-                    std::fprintf(stderr, " %d%s[%d,o%d]", loop[i], m_shared.count(loop[i]) ? "s" : "", m_edgeSide[directed(loop[i], loop[(i + 1) % n])], originOf(loop[i]));
-                std::fprintf(stderr, "\n");
-            }
             std::vector<int> cuts;
             for (int i = 0; i < n; ++i)
                 if (m_shared.count(loop[i]))
@@ -1168,13 +1074,13 @@ private:
             if (cuts.empty()) {
                 if (sideAt(0) == 0)
                     return Status::error("a cut-boundary loop lies on no side of the sweep");
-                if (sideAt(0) > 0)
+                if (sideAt(0) == sign)
                     out.push_back(loop);
                 continue;
             }
             for (std::size_t k = 0; k < cuts.size(); ++k) {
                 const int a = cuts[k], b = cuts[(k + 1) % cuts.size()];
-                if (sideAt(a) <= 0)
+                if (sideAt(a) != sign)
                     continue;
                 std::vector<int> arc;
                 for (int i = a;; i = (i + 1) % n) {
@@ -1195,8 +1101,11 @@ private:
         };
         std::vector<Stop> stops;
         for (int a = 0; a < static_cast<int>(arcs.size()); ++a) {
-            stops.push_back({perimeterAt(m_s.cutUvs[arcs[a].front()]), a, true});
-            stops.push_back({perimeterAt(m_s.cutUvs[arcs[a].back()]), a, false});
+            // Clockwise for the - side: the perimeter read backwards.
+            const double front = perimeterAt(m_s.cutUvs[arcs[a].front()]);
+            const double back = perimeterAt(m_s.cutUvs[arcs[a].back()]);
+            stops.push_back({sign > 0 ? front : 4 - front, a, true});
+            stops.push_back({sign > 0 ? back : 4 - back, a, false});
         }
         std::sort(stops.begin(), stops.end(), [](const Stop& x, const Stop& y) {
             return x.at != y.at ? x.at < y.at : (x.start ? 1 : 0) < (y.start ? 1 : 0);
@@ -1259,12 +1168,20 @@ private:
                 if (o != ends[0] && o != ends[1])
                     continue;
                 for (int w : m_s.triangles[pair[1]])
-                    if (originOf(w) == o)
-                        m_mate[u] = w;
+                    if (originOf(w) == o) {
+                        const auto [it, added] = m_mate.emplace(u, w);
+                        m_mirrorable = m_mirrorable && (added || it->second == w);
+                    }
             }
         }
         for (int v : m_shared)
             m_mate[v] = v;
+        // Two + copies with one - copy mate (a vertex the cut passes through twice): the caps
+        // cannot mirror each other vertex for vertex.
+        std::unordered_map<int, int> mateOf;
+        for (const auto& [u, w] : m_mate)
+            if (u != w && !mateOf.emplace(w, u).second)
+                m_mirrorable = false;
     }
 
     /// True if the surface (outside the caps) has the edge (a, b). Only edges between two cut
@@ -1340,6 +1257,8 @@ private:
         for (const auto& loop : loops)
             loopsOfPiece[pieces.find(loop[0])].push_back(loop);
         int capCount = 0, closed = 0;
+        if (!m_mirrorable)
+            return closeEachSide(loopsOfPiece);
         for (const auto& [piece, pieceLoops] : loopsOfPiece) {
             std::vector<std::vector<int>> polygons;
             if (Status s = plusPolygons(pieceLoops, polygons); !s.ok())
@@ -1364,15 +1283,6 @@ private:
             if (Status s = triangulateCap(uv, local, side, cap); !s.ok())
                 return s;
             avoidSurfaceEdges(cap, vertexOf);
-            if (const char* watch = std::getenv("RESECT_WATCH"); watch && std::count(vertexOf.begin(), vertexOf.end(), std::atoi(watch))) {
-                std::fprintf(stderr, "piece with %s: %zu polygons, %zu cap triangles:", watch, polygons.size(), cap.size());
-                for (const auto& c : cap) {
-                    std::fprintf(stderr, " (%d %d %d)", vertexOf[c[0]], vertexOf[c[1]], vertexOf[c[2]]);
-                    for (int k = 0; k < 3; ++k) { auto it = m_mate.find(vertexOf[c[k]]); std::fprintf(stderr, "[m%d]", it == m_mate.end() ? -9 : it->second); }
-                }
-                std::fprintf(stderr, "\n");
-                for (std::size_t k = 0; k < uv.size(); ++k) std::fprintf(stderr, "  uv %d: %.17g %.17g\n", vertexOf[k], uv[k].x(), uv[k].y());
-            }
             for (const auto& c : cap) {
                 // Counter-clockwise in (u, v); the + cap must run against the + boundary.
                 Tri plus{vertexOf[c[0]], vertexOf[c[1]], vertexOf[c[2]]};
@@ -1382,26 +1292,6 @@ private:
                 for (int k = 0; k < 3; ++k) {
                     auto it = m_mate.find(plus[k]);
                     if (it == m_mate.end()) {
-                        if (std::getenv("RESECT_DEBUG3")) {
-                            const int u = plus[k];
-                            std::fprintf(stderr, "no mate for %d (origin %d, shared %d)\n", u, originOf(u), int(m_shared.count(u)));
-                            for (const auto& pg : polygons) {
-                                const auto it2 = std::find(pg.begin(), pg.end(), u);
-                                if (it2 == pg.end()) continue;
-                                const int i = int(it2 - pg.begin()), n = int(pg.size());
-                                for (int d = -3; d <= 3; ++d) { const int v = pg[(i + d + n) % n], w = pg[(i + d + 1 + n) % n];
-                                    std::fprintf(stderr, "   poly %d%s -> %d side %d\n", v, m_shared.count(v) ? "s" : "", w, m_edgeSide.count(directed(v, w)) ? m_edgeSide[directed(v, w)] : 7); }
-                            }
-                            for (int t : m_touched) {
-                                const Tri& q = m_s.triangles[t];
-                                bool has = false;
-                                for (int v : q) has = has || originOf(v) == originOf(u);
-                                if (!has) continue;
-                                std::fprintf(stderr, "  tri %d (%d %d %d) origins (%d %d %d) side %d cutedges:", t, q[0], q[1], q[2], originOf(q[0]), originOf(q[1]), originOf(q[2]), m_side.count(t) ? m_side[t] : 9);
-                                for (int e = 0; e < 3; ++e) if (m_cutEdges.count(undirected(originOf(q[e]), originOf(q[(e+1)%3])))) std::fprintf(stderr, " %d-%d", q[e], q[(e+1)%3]);
-                                std::fprintf(stderr, "\n");
-                            }
-                        }
                         return Status::error("a cut-boundary vertex has no copy on the other side");
                     }
                     minus[k] = it->second;
@@ -1421,6 +1311,54 @@ private:
         if (closed == 0)
             return Status::error("the cut boundary has no side to close");
         m_out.capTriangles = 2 * capCount;
+        return Status::success();
+    }
+
+    /// Where the caps cannot mirror each other (the cut passes through a surface vertex twice,
+    /// and one side has two copies of it where the other has one), each side's loops are closed
+    /// by their own triangulation in (u, v). The two caps are then only as coincident as the
+    /// sweep is flat between their points (exactly, for a flat sweep).
+    Status closeEachSide(const std::map<int, std::vector<std::vector<int>>>& loopsOfPiece) {
+        int capCount = 0, closed = 0;
+        for (const auto& [piece, pieceLoops] : loopsOfPiece)
+            for (int sign : {1, -1}) {
+                std::vector<std::vector<int>> polygons;
+                if (Status s = sidePolygons(pieceLoops, sign, polygons); !s.ok())
+                    return s;
+                if (polygons.empty())
+                    continue;
+                ++closed;
+                std::vector<Vec2> uv;
+                std::vector<int> vertexOf;
+                std::vector<std::vector<int>> local;
+                for (const auto& polygon : polygons) {
+                    std::vector<int> loop;
+                    for (int v : polygon) {
+                        loop.push_back(static_cast<int>(uv.size()));
+                        uv.push_back(m_s.cutUvs[v]);
+                        vertexOf.push_back(v);
+                    }
+                    local.push_back(std::move(loop));
+                }
+                std::vector<std::array<int, 3>> cap;
+                if (Status s = triangulateCap(uv, local, sign, cap); !s.ok())
+                    return s;
+                for (const auto& c : cap) {
+                    // Counter-clockwise in (u, v): the + cap runs against its boundary, the -
+                    // cap (whose region lies right of its boundary) with it.
+                    Tri t{vertexOf[c[0]], vertexOf[c[1]], vertexOf[c[2]]};
+                    if (sign > 0)
+                        std::swap(t[1], t[2]);
+                    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+                        continue;
+                    m_s.triangles.push_back(t);
+                    m_s.cutFaces.push_back(1);
+                    ++capCount;
+                }
+            }
+        if (closed == 0)
+            return Status::error("the cut boundary has no side to close");
+        m_out.capTriangles = capCount;
         return Status::success();
     }
 
@@ -1472,6 +1410,7 @@ private:
     std::unordered_map<int, int> m_mate;                  ///< + copy -> - copy
     std::unordered_set<int> m_inner;                      ///< new vertices inside a piece (fan centres)
     int m_capStart = 0;                                   ///< first cap triangle
+    bool m_mirrorable = true;                             ///< every + boundary vertex has one - mate
     std::unordered_set<std::uint64_t> m_surfaceEdges;     ///< edges of the touched triangles
     std::unordered_map<std::uint64_t, int> m_segmentTriangle;  ///< cut segment -> the sweep triangle it lies in
     std::unordered_map<int, int> m_innerSide;             ///< their side

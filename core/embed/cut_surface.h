@@ -1,20 +1,27 @@
 #pragma once
 // Cutting the embedded high-resolution surface (section 5.1) and closing it with new faces
-// (section 5.2).
-//
-// Surface edges crossed by the sweep (exact test, in the deformed configuration) are split at
-// the crossing; texture coordinates and reference positions are interpolated with the crossing
-// parameter. A triangle with two split edges is cut into three triangles; the split points are
-// duplicated, one copy per side. A triangle with one split edge (the sweep's border passes
-// through it: a partial cut) is cut into two triangles and its split point is shared by both
-// sides: it is a "face vertex" of the paper. Surface vertices are never moved.
-//
-// The cut boundary is then traced (several loops for concave models), mapped to the sweep's
-// (u, v) plane and triangulated there with CGAL's constrained Delaunay triangulation; a loop
-// through two face vertices is closed by the chord between them (the paper's jump from one
-// face vertex to the other). One side's caps are triangulated and the other side gets the same
-// triangles, reversed, on its own copies: both pieces are closed and their volumes add up to the
-// original exactly (to rounding).
+// (section 5.2), robustly enough for a whole resection: any sequence of cuts, crossing earlier
+// cut faces and caps, through earlier cut vertices, partial or complete. The steps
+// (SurfaceCutter in the .cpp):
+//  1. candidates: triangles whose corners are not all beyond one face of the sweep's box;
+//  2. edge splits: every crossing of a candidate edge with the sweep (exact predicates; all of
+//     them, so an edge a curved sweep crosses twice is split twice); a crossing within rounding
+//     of a vertex puts the cut through the vertex instead;
+//  3. triangle splits: inside each crossed triangle the cut is traced across the sweep's
+//     triangles (the points where sweep edges pierce it are added), so the cut's image in the
+//     sweep's (u, v) plane is exact; the triangle is split into the pieces the cut bounds (ear
+//     clipping in its plane, without edges between two points of the cut), each piece with its
+//     side of the sweep;
+//  4. separation: every vertex on the cut gets one copy per group of its triangles connected
+//     through edges not on the cut (as the tets' separate step): two across a complete cut,
+//     one at the end of a partial cut (the paper's face vertices);
+//  5. boundary: the cut's boundary loops;
+//  6. caps: per piece, the + side's loops (and the lips of partial cuts, joined along the
+//     sweep's border) are triangulated in (u, v) (triangulate_cut.h); the - side gets the same
+//     triangles reversed on its copies, so both pieces are closed and their volumes add up to
+//     the original exactly (to rounding). Where that mirror is impossible (a cut passing twice
+//     through one vertex), each side is triangulated on its own.
+// Surface vertices are never moved.
 
 #include "core/mesh/triangle_surface.h"
 #include "core/status.h"

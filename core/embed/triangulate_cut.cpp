@@ -251,51 +251,23 @@ Status triangulateCap(const std::vector<Vec2>& points, const std::vector<std::ve
         const std::size_t inserted = cdt.number_of_vertices();
         for (const auto& [key, list] : m.edges)
             cdt.insert_constraint(handle[key >> 32], handle[key & 0xffffffffu]);
-        if (cdt.number_of_vertices() != inserted && !std::getenv("RESECT_DEBUG")) {
+        if (cdt.number_of_vertices() != inserted) {
+            // Two loop edges cross: the (u, v) image is degenerate here.
             triangulateByEars(points, loops, side, triangles);
             return Status::success();
         }
-        if (cdt.number_of_vertices() != inserted) {
-            if (std::getenv("RESECT_DEBUG")) {
-                std::fprintf(stderr, "crossing: %zu loops, %zu points\n", loops.size(), m.points.size());
-                for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
-                    const int d = v->info();
-                    if (d >= 0 && d < int(m.points.size()) && m.points[d].x() == v->point().x() && m.points[d].y() == v->point().y())
-                        continue;
-                    std::fprintf(stderr, "  new vertex at (%.17g %.17g)\n", v->point().x(), v->point().y());
-                    // loop edges near it
-                    for (const auto& [key, list] : m.edges) {
-                        const Vec2 a = m.points[key >> 32], b = m.points[key & 0xffffffffu];
-                        const Vec2 q(v->point().x(), v->point().y());
-                        const double t = (q - a).dot(b - a) / (b - a).squaredNorm();
-                        const Vec2 c = a + std::clamp(t, 0.0, 1.0) * (b - a);
-                        if ((c - q).norm() < 1e-9)
-                            std::fprintf(stderr, "    edge %d-%d (%.17g %.17g)-(%.17g %.17g) loop edges %zu first %d-%d\n", int(key >> 32), int(key & 0xffffffffu), a.x(), a.y(), b.x(), b.y(), list.size(), list[0][0], list[0][1]);
-                    }
-                }
-            }
-            return Status::error("the cut boundary crosses itself in the sweep's parameter plane");
-        }
         // A loop point exactly on another loop's edge splits that constraint; the windings
-        // below count whole loop edges, so that is refused too.
+        // below count whole loop edges, so the fallback takes that too.
         for (const auto& [key, list] : m.edges)
-            if (!cdt.is_edge(handle[key >> 32], handle[key & 0xffffffffu]) && !std::getenv("RESECT_DEBUG")) {
-                triangles.clear();
+            if (!cdt.is_edge(handle[key >> 32], handle[key & 0xffffffffu])) {
                 triangulateByEars(points, loops, side, triangles);
                 return Status::success();
-            } else if (!cdt.is_edge(handle[key >> 32], handle[key & 0xffffffffu])) {
-                if (std::getenv("RESECT_DEBUG")) {
-                    const Vec2 a = m.points[key >> 32], b = m.points[key & 0xffffffffu];
-                    std::fprintf(stderr, "edge %d-%d (%.17g %.17g)-(%.17g %.17g) loops %zu points %zu\n", int(key >> 32), int(key & 0xffffffffu), a.x(), a.y(), b.x(), b.y(), loops.size(), m.points.size());
-                    for (std::size_t d = 0; d < m.points.size(); ++d) {
-                        const Vec2 p = m.points[d];
-                        const double cross = (b - a).x() * (p - a).y() - (b - a).y() * (p - a).x();
-                        if (std::abs(cross) < 1e-12 && (p - a).dot(b - a) > 0 && (p - b).dot(a - b) > 0)
-                            std::fprintf(stderr, "  on it: %zu (%.17g %.17g)\n", d, p.x(), p.y());
-                    }
-                }
-                return Status::error("a cut-boundary point lies on another boundary edge in the sweep's parameter plane");
             }
+        // All points on one line (or fewer than three): no faces to mark.
+        if (cdt.dimension() < 2) {
+            triangulateByEars(points, loops, side, triangles);
+            return Status::success();
+        }
         for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
             f->info() = {};
         markWindings(cdt, m);

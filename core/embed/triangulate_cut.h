@@ -8,7 +8,10 @@
 // and two loops may run along the same segment in opposite directions. Such coincident points
 // are one vertex of the triangulation; each triangle corner is given back as the loop vertex of
 // the boundary sector the triangle lies in (turning around the point until a loop edge is met),
-// so the lips stay apart. Loops must not cross.
+// so the lips stay apart. Where the (u, v) image is degenerate (loop edges crossing by rounding,
+// a point on another loop's edge, all points on a line, a triangulation that does not bound
+// every loop edge exactly once), each loop is closed on its own by ear clipping instead: always
+// closed and manifold, only less well shaped.
 
 #include "core/status.h"
 #include "core/sweep/sweep_surface.h"
@@ -22,7 +25,7 @@ namespace resect {
 /// the loops' winding number has the sign of `side` (+1: the region lies left of every loop
 /// edge, so outer loops run counter-clockwise and holes clockwise; -1: the mirror image). Returns
 /// triangles, counter-clockwise in (u, v), whose corners are indices into `points` (see above).
-/// Fails, naming the cause, if two loop edges cross or a loop point is not finite.
+/// Fails only for a loop point that is not finite.
 Status triangulateCap(const std::vector<Vec2>& points, const std::vector<std::vector<int>>& loops, int side,
                       std::vector<std::array<int, 3>>& triangles);
 
