@@ -593,30 +593,40 @@ public:
     /// Splits triangle t (corners q, boundary `cycle` with its cut `points`) into the pieces
     /// the cut polylines bound, and records the cut edges and each piece's side.
     Status splitTriangle(int t, const Tri& q, const std::vector<int>& cycle, const std::vector<BoundaryPoint>& points) {
+        const std::vector<std::vector<int>> polylines = cutPolylines(q, points);
+        std::vector<std::vector<int>> polygons;
+        if (Status s = cutPolygons(cycle, polylines, polygons); !s.ok())
+            return s;
+        for (const auto& line : polylines)
+            for (std::size_t k = 0; k < line.size(); ++k) {
+                m_cutVertices.insert(line[k]);
+                if (k + 1 < line.size())
+                    m_cutEdges.insert(undirected(line[k], line[k + 1]));
+            }
+        return emitPieces(t, q, polygons, pieceSides(q, polygons));
+    }
+
+    /// The cut's polylines through triangle q, from boundary point to boundary point, traced on
+    /// the sweep (each segment's sweep triangle is recorded for the side probes).
+    std::vector<std::vector<int>> cutPolylines(const Tri& q, const std::vector<BoundaryPoint>& points) {
         const auto& P = m_s.positions;
         std::array<int, 3> order{q[0], q[1], q[2]};
         std::sort(order.begin(), order.end(), [&](int a, int b) { return precedes(P[a], a, P[b], b); });
         const std::array<Vec3, 3> T{P[order[0]], P[order[1]], P[order[2]]};
-
-        // The cut's polylines through this triangle, found by tracing on the sweep.
         std::vector<std::vector<int>> polylines;
-        auto& segmentTriangle = m_segmentTriangle;  // polyline segment -> its sweep triangle
         std::vector<bool> used(points.size(), false);
         std::vector<Pierce> path;
         std::vector<int> visited;
+        // Pierce points all but on top of a point before them or of the end (the sweep's edge
+        // passes within rounding of the triangle's edge) are dropped: they would only make
+        // needles, and their (u, v) could not be told apart from their neighbours'.
+        const double tiny = kCoincidentFraction * std::max({(P[q[1]] - P[q[0]]).norm(), (P[q[2]] - P[q[1]]).norm(),
+                                                             (P[q[0]] - P[q[2]]).norm()});
         for (std::size_t a = 0; a < points.size(); ++a) {
-            if (used[a])
-                continue;
             std::size_t b = 0;
-            const TraceEnd reached = trace(T, points, a, used, b, path, visited);
-            if (reached != TraceEnd::Reached)
+            if (used[a] || trace(T, points, a, used, b, path, visited) != TraceEnd::Reached)
                 continue;
             used[a] = used[b] = true;
-            // Pierce points all but on top of a point before them or of the end (the sweep's
-            // edge passes within rounding of the triangle's edge) are dropped: they would only
-            // make needles, and their (u, v) could not be told apart from their neighbours'.
-            const double tiny = kCoincidentFraction * std::max({(P[q[1]] - P[q[0]]).norm(), (P[q[2]] - P[q[1]]).norm(),
-                                                                 (P[q[0]] - P[q[2]]).norm()});
             std::vector<int> line{points[a].vertex}, lineTriangles{visited.front()};
             Vec3 last = P[points[a].vertex];
             const Vec3 end = P[points[b].vertex];
@@ -628,25 +638,29 @@ public:
                 }
             line.push_back(points[b].vertex);
             for (std::size_t k = 0; k + 1 < line.size(); ++k)
-                segmentTriangle[undirected(line[k], line[k + 1])] = lineTriangles[k];
+                m_segmentTriangle[undirected(line[k], line[k + 1])] = lineTriangles[k];
             polylines.push_back(std::move(line));
         }
         // Two boundary points that could not be traced to each other (a degenerate meeting of
         // the sweep with the triangle): the chord between them, unless one ends a partial cut.
         if (polylines.empty() && points.size() == 2) {
             std::size_t b = 0;
-            std::vector<bool> none(points.size(), false);
+            const std::vector<bool> none(points.size(), false);
             const bool partial = trace(T, points, 0, none, b, path, visited) == TraceEnd::Border ||
                                  trace(T, points, 1, none, b, path, visited) == TraceEnd::Border;
             if (!partial) {
                 polylines.push_back({points[0].vertex, points[1].vertex});
-                segmentTriangle[undirected(points[0].vertex, points[1].vertex)] = points[0].sweepTriangles.front();
+                m_segmentTriangle[undirected(points[0].vertex, points[1].vertex)] = points[0].sweepTriangles.front();
             }
         }
+        return polylines;
+    }
 
-        // Pieces: the triangle's boundary cut by each polyline in turn.
-        std::vector<std::vector<int>> polygons{cycle};
-        std::vector<std::array<int, 2>> across;  // per polyline: the two polygons beside it
+    /// The pieces of a triangle: its boundary `cycle` cut by each polyline in turn (every
+    /// polyline joins two points on the boundary of one piece so far).
+    static Status cutPolygons(const std::vector<int>& cycle, const std::vector<std::vector<int>>& polylines,
+                              std::vector<std::vector<int>>& polygons) {
+        polygons = {cycle};
         for (const auto& line : polylines) {
             int owner = -1;
             for (std::size_t k = 0; k < polygons.size() && owner < 0; ++k) {
@@ -677,50 +691,43 @@ public:
                 second.push_back(line[k]);
             polygons[owner] = std::move(first);
             polygons.push_back(std::move(second));
-            across.push_back({owner, static_cast<int>(polygons.size()) - 1});
-            for (std::size_t k = 0; k + 1 < line.size(); ++k)
-                m_cutEdges.insert(undirected(line[k], line[k + 1]));
         }
-        for (const auto& line : polylines)
-            for (int v : line)
-                m_cutVertices.insert(v);
+        return Status::success();
+    }
 
-        // Sides: from a segment of the cut on the piece's boundary (the side of that segment's
-        // sweep triangle a point just inside the piece lies on: the two pieces beside a segment
-        // always get opposite sides), else from an original corner off the cut, else across a
-        // polyline.
+    /// Each piece's side of the sweep: from a segment of the cut on its boundary (the side of
+    /// that segment's sweep triangle a point just inside the piece lies on: the two pieces
+    /// beside a segment always get opposite sides), else from an original corner off the cut;
+    /// 0 where neither tells (assignSides fills those in from neighbours). A (nearly) flat
+    /// triangle, a sliver an earlier degenerate cut left, has no plane to probe in.
+    std::vector<int> pieceSides(const Tri& q, const std::vector<std::vector<int>>& polygons) {
+        const auto& P = m_s.positions;
         std::vector<int> side(polygons.size(), 0);
         const Vec3 normal = (P[q[1]] - P[q[0]]).cross(P[q[2]] - P[q[0]]);
-        // A (nearly) flat triangle, a sliver an earlier degenerate cut left, has no plane to
-        // probe in: its pieces take their sides from their neighbours (assignSides).
         const double longest = std::max({(P[q[1]] - P[q[0]]).squaredNorm(), (P[q[2]] - P[q[1]]).squaredNorm(),
                                          (P[q[0]] - P[q[2]]).squaredNorm()});
-        const bool flat = !(normal.norm() > kFlatRatio * longest);
-        for (std::size_t k = 0; k < polygons.size() && !flat; ++k) {
+        if (!(normal.norm() > kFlatRatio * longest))
+            return side;
+        for (std::size_t k = 0; k < polygons.size(); ++k) {
             const auto& poly = polygons[k];
             for (std::size_t i = 0; i < poly.size() && side[k] == 0; ++i) {
                 const int a = poly[i], b = poly[(i + 1) % poly.size()];
-                const auto it = segmentTriangle.find(undirected(a, b));
-                if (a == b || it == segmentTriangle.end())
-                    continue;
-                side[k] = pieceSide(it->second, P[a], P[b], normal);
+                const auto it = m_segmentTriangle.find(undirected(a, b));
+                if (a != b && it != m_segmentTriangle.end())
+                    side[k] = pieceSide(it->second, P[a], P[b], normal);
             }
-        }
-        for (std::size_t k = 0; k < polygons.size() && !flat; ++k)
-            for (int v : polygons[k])
+            for (int v : poly)
                 if (v < m_first && !m_cutVertices.count(v) && side[k] == 0)
                     side[k] = cornerSide(q, v);
-        for (std::size_t round = 0; round < polygons.size(); ++round)
-            for (std::size_t l = 0; l < across.size(); ++l) {
-                auto [a, b] = across[l];
-                if (side[a] == 0 && side[b] != 0)
-                    side[a] = -side[b];
-                if (side[b] == 0 && side[a] != 0)
-                    side[b] = -side[a];
-            }
+        }
+        return side;
+    }
 
-        // Triangulate every piece in the triangle's plane; the first triangle takes t's slot.
-        const Vec3 n = normal.cwiseAbs();
+    /// Triangulates every piece in triangle t's plane; the first triangle takes t's slot, the
+    /// others are appended (inheriting t's cut-face flag).
+    Status emitPieces(int t, const Tri& q, const std::vector<std::vector<int>>& polygons, const std::vector<int>& side) {
+        const auto& P = m_s.positions;
+        const Vec3 n = (P[q[1]] - P[q[0]]).cross(P[q[2]] - P[q[0]]).cwiseAbs();
         const int drop = n.x() >= n.y() ? (n.x() >= n.z() ? 0 : 2) : (n.y() >= n.z() ? 1 : 2);
         // A flat triangle (its corners collinear; a sliver an earlier degenerate cut left) has
         // no orientation: its pieces are then only combinatorial, which is all they need.
