@@ -101,6 +101,32 @@ Status SurfaceBinding::bind(const TetMesh& mesh, const TriangleSurface& surface,
     return Status::success();
 }
 
+void SurfaceBinding::compact(const std::vector<int>& kept, const std::vector<int>& newTetOf, int tetCount,
+                             const std::unordered_map<int, std::pair<int, std::array<double, 4>>>& rebound) {
+    std::vector<int> tet(kept.size());
+    std::vector<std::array<double, 4>> weights(kept.size());
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+        if (auto it = rebound.find(kept[i]); it != rebound.end()) {
+            tet[i] = it->second.first;
+            weights[i] = it->second.second;
+            continue;
+        }
+        tet[i] = newTetOf[m_tet[kept[i]]];
+        weights[i] = m_weights[kept[i]];
+    }
+    m_tet = std::move(tet);
+    m_weights = std::move(weights);
+    m_verticesOfTet.assign(tetCount, {});
+    m_outside = 0;
+    for (int v = 0; v < static_cast<int>(m_tet.size()); ++v) {
+        m_verticesOfTet[m_tet[v]].push_back(v);
+        const auto& w = m_weights[v];
+        if (std::min({w[0], w[1], w[2], w[3]}) < -m_tolerances.inside)
+            ++m_outside;
+    }
+    sortByTet();
+}
+
 void SurfaceBinding::sortByTet() {
     m_order.resize(m_tet.size());
     std::iota(m_order.begin(), m_order.end(), 0);

@@ -11,6 +11,7 @@
 #include "core/status.h"
 #include "core/sweep/sweep_surface.h"
 
+#include <unordered_map>
 #include <vector>
 
 namespace resect {
@@ -56,6 +57,13 @@ public:
     void bindNewVertices(const TetMesh& mesh, const std::vector<Vec3>& positions, int first,
                          const std::vector<std::array<int, 2>>& sourceEdges, const std::vector<int>& sides,
                          const CutChanges& changes, const SweepSurface& sweep);
+
+    /// After tets were removed and the rest renumbered: keeps the vertices `kept` (vertex
+    /// kept[i] becomes vertex i), their tets mapped through `newTetOf` (old tet -> new tet; every
+    /// kept vertex's tet must survive). O(kept vertices + tets).
+    /// `rebound` gives new (tet, weights) for kept vertices whose tet did not survive.
+    void compact(const std::vector<int>& kept, const std::vector<int>& newTetOf, int tetCount,
+                 const std::unordered_map<int, std::pair<int, std::array<double, 4>>>& rebound = {});
 
     int vertexCount() const { return static_cast<int>(m_tet.size()); }
     int tetOf(int vertex) const { return m_tet[vertex]; }

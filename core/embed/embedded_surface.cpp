@@ -1,7 +1,10 @@
 #include "core/embed/embedded_surface.h"
 
+#include "core/mesh/union_find.h"
+
 #include <chrono>
 #include <limits>
+#include <map>
 
 namespace resect {
 
@@ -56,6 +59,88 @@ Status EmbeddedSurface::cut(const TetMesh& mesh, const CutChanges& changes, cons
     if (stats)
         *stats = std::move(c);
     return Status::success();
+}
+
+std::vector<TriangleSurface> EmbeddedSurface::splitOff(const std::vector<int>& pieceOfTet, int pieces,
+                                                       const std::vector<int>& newTetOf, const TetMesh& mesh) {
+    std::vector<TriangleSurface> out(pieces);
+    if (empty())
+        return out;
+    const TriangleSurface& s = m_surface;
+    // Connected parts of the surface, and the piece most of each part's vertices are bound to.
+    UnionFind parts(s.vertexCount());
+    for (const Tri& t : s.triangles) {
+        parts.unite(t[1], t[0]);
+        parts.unite(t[2], t[0]);
+    }
+    std::map<int, std::map<int, int>> votes;  // part root -> piece -> count
+    for (int v = 0; v < s.vertexCount(); ++v)
+        ++votes[parts.find(v)][pieceOfTet[m_binding.tetOf(v)]];
+    std::vector<int> destination(s.vertexCount(), -1);
+    for (int v = 0; v < s.vertexCount(); ++v) {
+        const auto& tally = votes[parts.find(v)];
+        destination[v] = std::max_element(tally.begin(), tally.end(), [](const auto& a, const auto& b) {
+                             return a.second < b.second;
+                         })->first;
+    }
+    // A kept vertex bound to a removed tet (on a part that went to the tissue by majority)
+    // is bound to the nearest kept tet (by centre; a linear scan, for these rare vertices).
+    std::vector<int> kept, newIndex(s.vertexCount(), -1);
+    std::vector<int> indexInChip(s.vertexCount(), -1);
+    std::unordered_map<int, std::pair<int, std::array<double, 4>>> rebound;
+    for (int v = 0; v < s.vertexCount(); ++v) {
+        if (destination[v] < 0) {
+            if (newTetOf[m_binding.tetOf(v)] < 0) {
+                int best = 0;
+                double bestDistance = std::numeric_limits<double>::infinity();
+                for (int t = 0; t < mesh.tetCount(); ++t) {
+                    Vec3 c = Vec3::Zero();
+                    for (int n : mesh.tet(t))
+                        c += mesh.pos(n) / 4;
+                    if ((c - s.positions[v]).squaredNorm() < bestDistance) {
+                        bestDistance = (c - s.positions[v]).squaredNorm();
+                        best = t;
+                    }
+                }
+                rebound[v] = {best, barycentricInTet(mesh, best, s.positions[v])};
+            }
+            newIndex[v] = static_cast<int>(kept.size());
+            kept.push_back(v);
+        } else {
+            TriangleSurface& chip = out[destination[v]];
+            indexInChip[v] = chip.vertexCount();
+            chip.positions.push_back(s.positions[v]);
+            if (!s.uvs.empty())
+                chip.uvs.push_back(s.uvs[v]);
+            if (!s.cutUvs.empty())
+                chip.cutUvs.push_back(s.cutUvs[v]);
+        }
+    }
+    TriangleSurface remaining;
+    for (int v : kept) {
+        remaining.positions.push_back(s.positions[v]);
+        if (!s.uvs.empty())
+            remaining.uvs.push_back(s.uvs[v]);
+        if (!s.cutUvs.empty())
+            remaining.cutUvs.push_back(s.cutUvs[v]);
+    }
+    for (int f = 0; f < s.triangleCount(); ++f) {
+        const Tri& t = s.triangles[f];
+        const int d = destination[t[0]];
+        const std::uint8_t flag = s.isCutFace(f) ? 1 : 0;
+        if (d < 0) {
+            if (newIndex[t[0]] < 0 || newIndex[t[1]] < 0 || newIndex[t[2]] < 0)
+                continue;
+            remaining.triangles.push_back({newIndex[t[0]], newIndex[t[1]], newIndex[t[2]]});
+            remaining.cutFaces.push_back(flag);
+        } else {
+            out[d].triangles.push_back({indexInChip[t[0]], indexInChip[t[1]], indexInChip[t[2]]});
+            out[d].cutFaces.push_back(flag);
+        }
+    }
+    m_binding.compact(kept, newTetOf, mesh.tetCount(), rebound);
+    m_surface = std::move(remaining);
+    return out;
 }
 
 } // namespace resect

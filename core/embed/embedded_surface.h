@@ -33,6 +33,16 @@ public:
     /// before the tet cut. On error the surface and its binding are unchanged.
     Status cut(const TetMesh& mesh, const CutChanges& changes, const SweepSurface& sweep, EmbeddedCut* stats = nullptr);
 
+    /// After a resection (core/tissue/resect_pieces.h): splits off the surface of every piece
+    /// that left the tissue. `pieceOfTet` (old tet -> -1 if kept, else the index of its resected
+    /// piece) decides where each connected part of the surface goes (the piece most of its
+    /// vertices are bound to); `newTetOf` renumbers the kept tets. Returns one surface per
+    /// resected piece (`pieces` of them; positions as they are). O(surface).
+    /// `mesh` is the tissue's mesh after the resection (a kept vertex bound to a removed tet, on
+    /// a part split by rounding, is bound to the nearest kept tet).
+    std::vector<TriangleSurface> splitOff(const std::vector<int>& pieceOfTet, int pieces,
+                                          const std::vector<int>& newTetOf, const TetMesh& mesh);
+
     bool empty() const { return m_surface.triangles.empty(); }
     const TriangleSurface& surface() const { return m_surface; }
     const SurfaceBinding& binding() const { return m_binding; }

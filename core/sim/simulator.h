@@ -127,6 +127,12 @@ public:
     double integrateMsTotal() const { return m_integrateMsTotal; }
     int stepsTaken() const { return m_steps; }
     double time() const { return m_time; }
+    /// Continues the clock of an earlier simulator of the same tissue (rebuilt after its tets
+    /// were renumbered, e.g. when a resected piece left it).
+    void resumeClock(double time, int steps) {
+        m_time = time;
+        m_steps = steps;
+    }
     int threads() const { return m_threads; }
     /// Threads of the node passes for the current node count.
     int nodeThreads() const;

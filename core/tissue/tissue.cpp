@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 
 namespace resect {
 namespace {
@@ -39,6 +40,12 @@ Tissue& Tissue::operator=(Tissue&& other) noexcept {
         m_schemes = std::move(other.m_schemes);
         m_cuts = other.m_cuts;
         m_sim = std::move(other.m_sim);
+        m_setup = std::move(other.m_setup);
+        m_resected = other.m_resected;
+        m_chips = std::move(other.m_chips);
+        m_resectedVolume = other.m_resectedVolume;
+        m_resectedMass = other.m_resectedMass;
+        m_floor = other.m_floor;
         m_stepsSeen = other.m_stepsSeen;
         m_indexStale = other.m_indexStale;
         m_surfaceStale = other.m_surfaceStale;
@@ -51,7 +58,8 @@ Tissue::Tissue(const Tissue& other)
     : m_mesh(std::make_unique<TetMesh>(*other.m_mesh)),
       m_cutter(std::make_unique<HybridCutter>(*other.m_cutter, *m_mesh)), m_surface(other.m_surface),
       m_material(other.m_material), m_anchors(other.m_anchors), m_schemes(other.m_schemes), m_cuts(other.m_cuts),
-      m_pieces(std::make_unique<PiecesCache>()) {
+      m_resected(other.m_resected), m_chips(other.m_chips), m_resectedVolume(other.m_resectedVolume),
+      m_resectedMass(other.m_resectedMass), m_floor(other.m_floor), m_pieces(std::make_unique<PiecesCache>()) {
     const bool stepped = other.m_sim && other.m_sim->stepsTaken() != other.m_stepsSeen;
     m_indexStale = other.m_indexStale || stepped;
     m_surfaceStale = other.m_surfaceStale || stepped;
@@ -74,6 +82,9 @@ Status Tissue::create(TetMesh mesh, TriangleSurface surface, const Material& mat
         if (Status s = t.m_surface.bind(mesh, std::move(surface)); !s.ok())
             return Status::error("binding the surface: " + s.message());
     t.m_schemes.assign(mesh.tetCount(), Scheme::None);
+    t.m_floor = std::numeric_limits<double>::infinity();
+    for (const Vec3& p : mesh.positions())
+        t.m_floor = std::min(t.m_floor, p.z());
     *t.m_mesh = std::move(mesh);
     t.m_cutter = std::make_unique<HybridCutter>(*t.m_mesh);
     out = std::move(t);
@@ -184,10 +195,70 @@ Status Tissue::cut(const SweepSurface& sweep, const CutOptions& requested, Tissu
 
     result.tets = cut.stats;
     result.changes = std::move(cut.changes);
+
+    // 6. Resected pieces leave.
+    if (m_resected != ResectedPieces::Keep && !m_anchors.empty()) {
+        t0 = Clock::now();
+        resect(result);
+        result.resectionMs = msSince(t0);
+    }
+
     result.totalMs = msSince(start);
     if (out)
         *out = std::move(result);
     return Status::success();
+}
+
+void Tissue::resect(TissueCut& result) {
+    const Components& comp = pieces();
+    if (comp.count <= 1)
+        return;
+    const Resection r = resectPieces(*m_mesh, comp, m_anchors, m_cuts, m_chips);
+    if (r.chips == 0)
+        return;
+    // The surface of each resected piece goes with it.
+    std::vector<TriangleSurface> surfaces = m_surface.splitOff(r.pieceOfTet, r.chips, r.newTet, *m_mesh);
+    for (int c = 0; c < r.chips; ++c) {
+        Chip& chip = m_chips[r.firstChip + c];
+        chip.surface = std::move(surfaces[c]);
+        makeRigidBody(chip);
+    }
+    // Everything indexed by node or tet follows the renumbering.
+    FixedSelection anchors;
+    for (int n : m_anchors.nodes())
+        if (r.newNode[n] >= 0)
+            anchors.nodes.push_back(r.newNode[n]);
+    anchors.box = m_anchors.box();
+    (void)Anchors::create(*m_mesh, anchors, m_anchors);  // valid by construction
+    std::vector<Scheme> schemes(m_mesh->tetCount(), Scheme::None);
+    for (std::size_t t = 0; t < r.newTet.size(); ++t)
+        if (r.newTet[t] >= 0)
+            schemes[r.newTet[t]] = m_schemes[t];
+    m_schemes = std::move(schemes);
+    m_cutter->refreshSpatialIndex();
+    m_indexStale = false;
+    {
+        std::lock_guard lock(m_pieces->mutex);
+        m_pieces->components.reset();
+    }
+    // The simulation is rebuilt on what remains; its clock goes on.
+    if (m_sim) {
+        const double time = m_sim->time();
+        const int steps = m_sim->stepsTaken();
+        if (startSimulation(m_setup).ok())
+            m_sim->resumeClock(time, steps);
+        m_stepsSeen = steps;
+    }
+    m_resectedVolume += r.volume;
+    m_resectedMass += r.mass;
+    result.resectedPieces = r.chips;
+    result.resectedVolume = r.volume;
+    result.resectedMass = r.mass;
+    // The change list's indices refer to the mesh before the resection: it is no use to
+    // followers any more, which rebuild (a resection renumbers the tissue).
+    result.changes = {};
+    result.changes.firstNewNode = m_mesh->nodeCount();
+    result.changes.firstNewTet = m_mesh->tetCount();
 }
 
 Status Tissue::startSimulation(const SimulationSetup& setup) {
@@ -204,6 +275,7 @@ Status Tissue::startSimulation(const SimulationSetup& setup) {
         if (Status s = sim->addEffect(name, settings); !s.ok())
             return Status::error("effect '" + name + "': " + s.message());
     m_sim = std::move(sim);
+    m_setup = setup;
     m_stepsSeen = 0;
     return Status::success();
 }
@@ -217,7 +289,13 @@ void Tissue::stopSimulation() {
 Status Tissue::step(double h) {
     if (!m_sim)
         return Status::error("no simulation is running");
-    return m_sim->step(h);
+    if (Status s = m_sim->step(h); !s.ok())
+        return s;
+    if (m_resected == ResectedPieces::Rigid && !m_chips.empty()) {
+        const bool gravity = std::find(m_setup.effects.begin(), m_setup.effects.end(), "gravity") != m_setup.effects.end();
+        stepChips(m_chips, h, gravity ? m_setup.settings.gravity : Vec3::Zero(), m_floor);
+    }
+    return Status::success();
 }
 
 TetMesh Tissue::takeMesh() && {

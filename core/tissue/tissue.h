@@ -14,7 +14,10 @@
 //   2. the tets are cut (HybridCutter: section 4.1's steps, masses by Eq. 3);
 //   3. the embedded surface is cut and closed (section 5.1, 5.2) and its vertices re-bound;
 //   4. the simulator's effects follow the change list locally (Simulator::applyCut);
-//   5. anchors, schemes and pieces follow.
+//   5. anchors, schemes and pieces follow;
+//   6. pieces that no longer touch an anchored node are resected (resect_pieces.h) when the
+//      tissue's ResectedPieces says so: they leave the tet mesh and its surface and become
+//      chips (removed, or rigid bodies that fall); the simulation is rebuilt on what remains.
 // Every stage that can fail (2 and 3) runs before the ones that cannot be undone, under a
 // backup of the mesh and the spatial index: on failure or cancellation the tissue is exactly
 // as it was (the mesh bit-identical, node adjacency order included; the surface, its binding,
@@ -28,6 +31,7 @@
 #include "core/sim/anchors.h"
 #include "core/sim/simulator.h"
 #include "core/status.h"
+#include "core/tissue/resect_pieces.h"
 
 #include <memory>
 #include <mutex>
@@ -43,7 +47,10 @@ struct TissueCut {
     EmbeddedCut surface;     ///< the surface cut's counts and stage times (zeros without one)
     double surfaceMs = 0;    ///< surface update, cut and re-binding together
     double simulationMs = 0; ///< the simulator's effects following the change list
+    double resectionMs = 0;  ///< removing resected pieces (0 if none)
     double totalMs = 0;      ///< the whole cut, every stage
+    int resectedPieces = 0;  ///< pieces this cut resected (they are chips now)
+    double resectedVolume = 0, resectedMass = 0;  ///< their reference volume (mm^3) and mass (g)
     CutChanges changes;      ///< what changed (for views and other followers)
 };
 
@@ -90,6 +97,16 @@ public:
     /// Cuts applied since create().
     int cutCount() const { return m_cuts; }
 
+    /// What happens to pieces that no longer touch an anchored node after a cut (Keep by
+    /// default; nothing is resected without anchors).
+    void setResectedPieces(ResectedPieces policy) { m_resected = policy; }
+    ResectedPieces resectedPieces() const { return m_resected; }
+    /// The pieces resected so far, in order.
+    const std::vector<Chip>& chips() const { return m_chips; }
+    /// Reference volume (mm^3) and mass (g) resected so far: with the tissue's, the original's.
+    double resectedVolume() const { return m_resectedVolume; }
+    double resectedMass() const { return m_resectedMass; }
+
     /// Applies one sweep to the tissue (see the top of this file). `out` (optional) receives
     /// counts, stage times and the change list; `proceed` is asked before each stage and may
     /// cancel. CutOptions::density is replaced by the material's density.
@@ -104,7 +121,8 @@ public:
     /// (which then rebuilds the spatial index) and by updateSurface().
     Simulator* simulator() { return m_sim.get(); }
     const Simulator* simulator() const { return m_sim.get(); }
-    /// One simulation step of h seconds (Simulator::step).
+    /// One simulation step of h seconds (Simulator::step); rigid chips fall with it (resting on
+    /// the plane of the tissue's lowest point as created).
     Status step(double h);
 
     /// Moves the embedded surface with the tets (call before drawing or saving it).
@@ -122,6 +140,8 @@ private:
     void followPositions();
     /// Step 5 of cut(): the scheme of every tet the cut produced or changed.
     void updateSchemes(const CutChanges& changes);
+    /// Step 6 of cut(): resected pieces leave the tissue; fills the result's counts.
+    void resect(TissueCut& result);
 
     std::unique_ptr<TetMesh> m_mesh;        // on the heap: the cutter and simulator refer to it
     std::unique_ptr<HybridCutter> m_cutter;
@@ -131,6 +151,11 @@ private:
     std::vector<Scheme> m_schemes;
     int m_cuts = 0;
     std::unique_ptr<Simulator> m_sim;
+    SimulationSetup m_setup;    ///< of the running simulation (rebuilt after a resection)
+    ResectedPieces m_resected = ResectedPieces::Keep;
+    std::vector<Chip> m_chips;
+    double m_resectedVolume = 0, m_resectedMass = 0;
+    double m_floor = 0;         ///< z of the tissue's lowest node as created: where chips come to rest
     int m_stepsSeen = 0;        ///< simulator steps when the tissue last looked
     bool m_indexStale = false;  ///< the tets moved since the spatial index was built
     bool m_surfaceStale = true; ///< the tets moved since the surface last followed them

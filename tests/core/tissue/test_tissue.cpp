@@ -289,6 +289,77 @@ private slots:
         QCOMPARE(tissue.pieces().count, 2);
     }
 
+    void resectedPiecesLeaveTheTissue_data() {
+        QTest::addColumn<int>("policy");
+        QTest::newRow("remove") << static_cast<int>(ResectedPieces::Remove);
+        QTest::newRow("rigid") << static_cast<int>(ResectedPieces::Rigid);
+    }
+    void resectedPiecesLeaveTheTissue() {
+        // The head cut off a polyp anchored at its base is resected: it leaves the tet mesh
+        // and the surface, mass and volume are accounted for, the simulation goes on, and a
+        // later cut through where the head was cuts nothing.
+        QFETCH(int, policy);
+        Tissue tissue = makeTissue(1);
+        tissue.setResectedPieces(static_cast<ResectedPieces>(policy));
+        QVERIFY(tissue.startSimulation(sceneSetup()).ok());
+        const double dt = tissue.simulator()->timeStep();
+        for (int i = 0; i < 5; ++i)
+            QVERIFY(tissue.step(dt).ok());
+        const double mass = totalMass(tissue.mesh()), volume = tissue.mesh().totalReferenceVolume();
+        const int tets = tissue.mesh().tetCount();
+        TissueCut cut;
+        QVERIFY(tissue.cut(planeAt(15, 1), CutOptions{}, &cut).ok());
+        QCOMPARE(cut.resectedPieces, 1);
+        QCOMPARE(static_cast<int>(tissue.chips().size()), 1);
+        QCOMPARE(tissue.pieces().count, 1);
+        const Chip& chip = tissue.chips().front();
+        QCOMPARE(chip.cut, 1);
+        QCOMPARE(tissue.mesh().tetCount() + chip.mesh.tetCount(), tets + cut.tets.addedTets);
+        QVERIFY(std::abs(totalMass(tissue.mesh()) + tissue.resectedMass() - mass) <= 1e-12 * mass);
+        QVERIFY(std::abs(tissue.mesh().totalReferenceVolume() + tissue.resectedVolume() - volume) <= 1e-12 * volume);
+        QCOMPARE(tissue.resectedMass(), chip.mass);
+        // The surface went with its piece: both closed.
+        QVERIFY(!chip.surface.triangles.empty());
+        QVERIFY(testing::surfaceIsClosed(chip.surface));
+        QVERIFY(testing::surfaceIsClosed(tissue.surface().surface()));
+        QCOMPARE(tissue.surface().binding().vertexCount(), tissue.surface().surface().vertexCount());
+        // Every anchored node is still in the tissue; the fixed effect holds the same list.
+        const auto* fixed = dynamic_cast<const FixedNodesEffect*>(tissue.simulator()->findEffect("fixed"));
+        QVERIFY(fixed);
+        QCOMPARE(fixed->nodes(), tissue.anchors().nodes());
+        QCOMPARE(tissue.simulator()->stepsTaken(), 5);
+        const double after = tissue.simulator()->timeStep();  // the cut's elements set it now
+        for (int i = 0; i < 20; ++i) {
+            const Status s = tissue.step(after);
+            QVERIFY2(s.ok(), s.message().c_str());
+        }
+        if (static_cast<ResectedPieces>(policy) == ResectedPieces::Rigid) {
+            // The chip fell (gravity is -z).
+            Vec3 centre = Vec3::Zero();
+            for (const Vec3& p : chip.mesh.positions())
+                centre += p / chip.mesh.nodeCount();
+            QVERIFY(tissue.chips().front().body.velocity.z() < 0);
+        }
+        // Where the head was there is nothing left to cut.
+        TissueCut again;
+        QVERIFY(tissue.cut(planeAt(17, 1), CutOptions{}, &again).ok());
+        QCOMPARE(again.tets.crossedEdges, 0);
+        QCOMPARE(again.resectedPieces, 0);
+    }
+
+    void keptOrUnanchoredPiecesStay() {
+        Tissue kept = makeTissue(1, false);  // ResectedPieces::Keep by default
+        QVERIFY(kept.cut(planeAt(15, 1), CutOptions{}).ok());
+        QCOMPARE(kept.pieces().count, 2);
+        QVERIFY(kept.chips().empty());
+        Tissue free;
+        QVERIFY(Tissue::create(polyp(1).mesh, {}, Material{}, {}, free).ok());
+        free.setResectedPieces(ResectedPieces::Remove);
+        QVERIFY(free.cut(planeAt(15, 1), CutOptions{}).ok());
+        QCOMPARE(free.pieces().count, 2);  // no anchors: nothing tells tissue from chip
+        QVERIFY(free.chips().empty());
+    }
+
     void refusals() {
         Tissue empty;
         QVERIFY(empty.empty());

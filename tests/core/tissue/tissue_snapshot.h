@@ -9,6 +9,7 @@
 #include <QStringList>
 
 #include <cstring>
+#include <map>
 #include <vector>
 
 namespace resect::testing {
@@ -86,5 +87,17 @@ struct TissueSnapshot {
         return d.join(", ");
     }
 };
+
+/// True if every edge of the surface is in exactly two triangles, once in each direction.
+inline bool surfaceIsClosed(const TriangleSurface& s) {
+    std::map<std::pair<int, int>, int> directed;
+    for (const Tri& t : s.triangles)
+        for (int e = 0; e < 3; ++e)
+            ++directed[{t[e], t[(e + 1) % 3]}];
+    for (const auto& [e, n] : directed)
+        if (n != 1 || directed.count({e.second, e.first}) != 1)
+            return false;
+    return true;
+}
 
 } // namespace resect::testing

@@ -1,0 +1,73 @@
+#pragma once
+// After a cut: the pieces that no longer touch an anchored node (a fixed region) are resected
+// (the paper's Figure 10: each pass of the loop takes a chip off). They leave the tissue's tet
+// mesh, so later cuts never cut them again, and become Chips, which either leave the scene
+// (Remove) or fall as one rigid body each (Rigid: a chip never limits the tissue's time step).
+// Keep leaves them in the tissue, deformable, as before.
+
+#include "core/mesh/topology.h"
+#include "core/mesh/triangle_surface.h"
+#include "core/sim/anchors.h"
+
+#include <Eigen/Geometry>
+
+#include <string>
+#include <vector>
+
+namespace resect {
+
+enum class ResectedPieces { Keep, Remove, Rigid };
+/// "keep", "remove", "rigid".
+const char* resectedPiecesName(ResectedPieces policy);
+/// Parses the names above (also "deformable" for Keep); false for anything else.
+bool parseResectedPieces(const std::string& name, ResectedPieces& out);
+
+/// One rigid body: centre of mass and orientation, velocities, and its mass properties.
+struct RigidBody {
+    Vec3 centre = Vec3::Zero();                               ///< mm, current centre of mass
+    Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+    Vec3 velocity = Vec3::Zero();                             ///< mm/s
+    Vec3 angularVelocity = Vec3::Zero();                      ///< rad/s, world frame
+    double mass = 0;                                          ///< g
+    Eigen::Matrix3d inertia = Eigen::Matrix3d::Identity();    ///< g mm^2, body frame, about the centre
+    std::vector<Vec3> local;                                  ///< the chip's nodes in the body frame
+    bool resting = false;                                     ///< lying on the floor
+};
+
+/// A piece that left the tissue.
+struct Chip {
+    TetMesh mesh;             ///< its tets and nodes, renumbered; positions follow the body
+    TriangleSurface surface;  ///< its part of the embedded surface (may be empty)
+    std::vector<Vec3> surfaceLocal;  ///< the surface's vertices in the body frame
+    double volume = 0;        ///< reference volume, mm^3
+    double mass = 0;          ///< g
+    int cut = 0;              ///< the cut (counted from 1) that resected it
+    RigidBody body;
+};
+
+/// What resectPieces did: the renumbering of the tissue (old -> new index, -1 removed) and
+/// the chip each removed tet went to (-1 for kept tets).
+struct Resection {
+    std::vector<int> newNode, newTet, pieceOfTet;
+    int firstChip = 0;  ///< index in `chips` of the first chip made now
+    int chips = 0;      ///< chips made now
+    double volume = 0, mass = 0;
+};
+
+/// Splits the pieces of `mesh` (its components `pieces`) holding no anchored node off it:
+/// `mesh` keeps the rest, renumbered in order; each removed piece is appended to `chips` (with
+/// its rigid body at rest). With no anchors nothing is removed. O(mesh).
+Resection resectPieces(TetMesh& mesh, const Components& pieces, const Anchors& anchors, int cut,
+                       std::vector<Chip>& chips);
+
+/// The rigid body of a chip from its tets (mass from its nodes' masses, inertia from its tets
+/// with their mass spread evenly); its nodes and surface in the body frame.
+void makeRigidBody(Chip& chip);
+
+/// One step of h seconds of every chip's rigid body under gravity (mm/s^2), resting on the
+/// plane z = floor: semi-implicit Euler, with the chip's nodes kept above the floor by a
+/// position correction of the body and friction that stops it. Moves the chips' nodes and
+/// surfaces. O(chip nodes).
+void stepChips(std::vector<Chip>& chips, double h, const Vec3& gravity, double floor);
+
+} // namespace resect
