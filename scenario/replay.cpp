@@ -45,7 +45,11 @@ std::vector<Vec3> withdrawnTool(const std::vector<Vec3>& pose, const TetMesh& me
 }
 
 Status makeTissue(ReplayPlan& plan, Tissue& out) {
-    return Tissue::create(std::move(plan.mesh), std::move(plan.surface), plan.material, plan.anchors, out);
+    if (Status s = Tissue::create(std::move(plan.mesh), std::move(plan.surface), plan.material, plan.anchors, out);
+        !s.ok())
+        return s;
+    out.setResectedPieces(plan.resected);
+    return Status::success();
 }
 
 SimulationSetup simulationSetup(const ReplayPlan& plan) {
@@ -71,7 +75,7 @@ double resectedVolumeFraction(const Tissue& tissue) {
         }
     if (!anyAnchored && comp.count > 0)
         anchored[std::max_element(volume.begin(), volume.end()) - volume.begin()] = true;
-    double all = 0, resected = 0;
+    double all = tissue.resectedVolume(), resected = tissue.resectedVolume();
     for (int c = 0; c < comp.count; ++c) {
         all += volume[c];
         if (!anchored[c])
@@ -121,6 +125,11 @@ public:
             return Status::error(stroke.name + ": " + s.message());
         m_out.cutTotals += cut.tets;
         m_out.surfaceCapTriangles += cut.surface.surface.capTriangles;
+        if (cut.resectedPieces > 0) {
+            // The tissue rebuilt its simulation on what remains: the effects are new objects.
+            m_sim = m_tissue.simulator();
+            m_tool = dynamic_cast<ToolContactEffect*>(m_sim->findEffect("tool-contact"));
+        }
         if (m_tool && stroke.times.size() >= 2) {
             const double t0 = stroke.times.front();
             if (Status s = simulate(stroke.times.back() - t0, [&](double t) { return toolAt(stroke, t0 + t); }); !s.ok())
@@ -185,7 +194,9 @@ public:
             m_out.finite = mesh.pos(n).allFinite();
         for (int t = 0; t < mesh.tetCount(); ++t)
             m_out.inverted += mesh.currentVolume(t) > 0 ? 0 : 1;
-        m_out.pieces = m_tissue.pieces().count;
+        m_out.pieces = m_tissue.pieces().count + static_cast<int>(m_tissue.chips().size());
+        m_out.resectedPieces = static_cast<int>(m_tissue.chips().size());
+        m_out.resectedMass = m_tissue.resectedMass();
         m_out.resectedVolumeFraction = resectedVolumeFraction(m_tissue);
         m_out.minRadiusRatio = summarizeQuality(mesh).minRadiusRatio;
         m_out.surface = m_tissue.surface().surface();

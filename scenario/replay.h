@@ -14,9 +14,13 @@
 // integrator, 0.8 times it (the stable estimate holds for small deformations, and the tool's
 // projection deforms the small elements next to a cut strongly within one step).
 //
-// Outcome. `pieces` are the tet mesh's connected components; the resected volume fraction is
-// the reference volume of the pieces holding no anchored node (Tissue::anchors) over the
-// total (with no anchored nodes: all pieces but the largest); `inverted` counts tets with non-positive
+// Resected pieces. A piece a cut separates from every anchored node leaves the tissue as the
+// plan says (`resected`: rigid chips by default, resect_pieces.h).
+//
+// Outcome. `pieces` are the tet mesh's connected components plus the resected chips; the
+// resected volume fraction is the reference volume of the chips and of the pieces holding no
+// anchored node (Tissue::anchors) over the total (with no anchored nodes: all pieces but the
+// largest); `inverted` counts tets with non-positive
 // current volume at the end. A simulation that diverges stops the replay with
 // `finite = false` and the reason in `failure` (the replay itself succeeds: expectations
 // decide).
@@ -54,6 +58,7 @@ struct ReplayPlan {
     std::vector<std::string> effects;  ///< names for the EffectRegistry, in order
     EffectSettings effectSettings;     ///< their parameters (gravity, tool, ...; `fixed` holds `anchors`)
     SimulatorOptions simulation;       ///< integrator and dt (0: the stable step)
+    ResectedPieces resected = ResectedPieces::Rigid;  ///< pieces a cut separates from the anchors
     double duration = 0;               ///< s simulated after the strokes
     long long maxSteps = 2'000'000;    ///< refuse plans that need more steps than this
 };
@@ -62,7 +67,9 @@ struct ReplayOutcome {
     TetMesh mesh;              ///< the tissue at the end
     TriangleSurface surface;   ///< the embedded surface at the end (deformed with the tets)
     int tetsBefore = 0;
-    int pieces = 0;
+    int pieces = 0;            ///< pieces the tissue was cut into: the tissue's and the resected ones
+    int resectedPieces = 0;    ///< pieces that left the tissue (chips)
+    double resectedMass = 0;   ///< g, their mass
     double resectedVolumeFraction = 0;
     double minRadiusRatio = 0;
     bool finite = true;

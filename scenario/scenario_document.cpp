@@ -258,7 +258,8 @@ QJsonObject scenarioToJson(const Scenario& s) {
     root["simulation"] = withExtra(
         {{"integrator", qs(sim.integrator)},
          {"time_step", sim.stableTimeStep() ? QJsonValue("stable") : QJsonValue(sim.timeStep)},
-         {"duration", sim.duration}},
+         {"duration", sim.duration},
+         {"resected_pieces", qs(sim.resectedPieces)}},
         sim.extra);
 
     QJsonArray expectations;

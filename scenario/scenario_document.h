@@ -73,7 +73,9 @@
 //                                           tissue's material damping, which must then be > 0)
 //  simulation               integrator symplectic-euler|velocity-verlet|backward-euler;
 //                           time_step: s in (0, 1] or "stable" (the stable explicit step);
-//                           duration: s in [0, 1e5] (0: no simulation after the cuts)
+//                           duration: s in [0, 1e5] (0: no simulation after the cuts);
+//                           resected_pieces rigid (default) | remove | deformable: what
+//                           becomes of a piece a cut separates from every fixed region
 //  expectations[]           {"kind", "value", "tissue" (optional: one tissue's name; absent:
 //                           every tissue must meet it)}; kinds:
 //                             pieces_at_least                   integer >= 1: connected pieces
@@ -229,6 +231,7 @@ struct SimulationSettings {
         "symplectic-euler"; ///< symplectic-euler|velocity-verlet|backward-euler
     double timeStep = 0;    ///< s; 0 means "stable"
     double duration = 0;    ///< s
+    std::string resectedPieces = "rigid";  ///< rigid|remove|deformable: pieces off the fixed regions
     QJsonObject extra;
     bool stableTimeStep() const { return timeStep == 0; }
     bool operator==(const SimulationSettings&) const = default;

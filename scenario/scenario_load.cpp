@@ -752,6 +752,7 @@ void readSimulation(Context& c, const QJsonValue& v, SimulationSettings& out) {
     } else if (dt.isDouble()) {
         readNumber(c, dt, f.at("time_step"), {0, 1, true}, out.timeStep);
     }
+    f.choice("resected_pieces", {"rigid", "remove", "deformable"}, out.resectedPieces);
     const bool durationOk = f.number("duration", out.duration, {0, 1e5});
     if (durationOk && out.timeStep > 0 && out.duration / out.timeStep > kMaxSimulationSteps)
         c.error("simulation", "duration / time_step is " + num(out.duration / out.timeStep) +

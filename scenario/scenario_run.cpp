@@ -129,6 +129,7 @@ Status planLoadedTissue(const Scenario& scenario, const TissueSpec& tissue, TetM
     plan.simulation.threads = 1;
     plan.effectSettings.threads = 1;
     plan.duration = scenario.simulation.duration;
+    (void)parseResectedPieces(scenario.simulation.resectedPieces, plan.resected);  // validated when read
     return Status::success();
 }
 
@@ -202,6 +203,7 @@ QJsonObject scenarioRunJson(const ScenarioRun& run) {
             {"tets", o.mesh.tetCount()},
             {"nodes", o.mesh.nodeCount()},
             {"pieces", o.pieces},
+            {"resected", QJsonObject{{"pieces", o.resectedPieces}, {"mass", o.resectedMass}}},
             {"resected_volume_fraction", o.resectedVolumeFraction},
             {"min_radius_ratio", o.minRadiusRatio},
             {"finite", o.finite},

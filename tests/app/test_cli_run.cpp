@@ -15,6 +15,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <string>
+
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
 #include <vtkNew.h>
@@ -164,7 +166,8 @@ private slots:
             vtkNew<vtkXMLUnstructuredGridReader> reader;
             reader->SetFileName(qPrintable(out + "/" + vtu));
             reader->Update();
-            QVERIFY(reader->GetOutput()->GetNumberOfCells() > 800);
+            // The input polyp has 889 tets; the result is what remains after the chips left.
+            QVERIFY(reader->GetOutput()->GetNumberOfCells() > (std::string(vtu) == "polyp.vtu" ? 800 : 300));
             QVERIFY(reader->GetOutput()->GetPointData()->GetArray("reference_position"));
         }
         for (const char* glb : {"polyp-visual.glb", "result/polyp.glb"}) {

@@ -50,8 +50,11 @@ class TestReplay : public QObject {
     Q_OBJECT
 private slots:
     void strokesCutAndTheFreedPartFalls() {
+        // The freed part stays in the tissue, deformable (resected pieces kept).
+        ReplayPlan plan = boxPlan(true);
+        plan.resected = ResectedPieces::Keep;
         ReplayOutcome out;
-        const Status s = replay(boxPlan(true), out);
+        const Status s = replay(std::move(plan), out);
         QVERIFY2(s.ok(), s.message().c_str());
         QVERIFY2(out.failure.empty(), out.failure.c_str());
         QVERIFY(out.finite);
@@ -75,6 +78,25 @@ private slots:
             if (out.mesh.ref(n).z() > 3.9)
                 lowest = std::min(lowest, out.mesh.pos(n).z() - out.mesh.ref(n).z());
         QVERIFY(lowest < -0.5);  // g t^2 / 2 over 70 ms is 24 mm
+    }
+
+    void theFreedPartLeavesAsARigidChip() {
+        // By default a piece off the anchors is resected as a rigid chip: it leaves the tet
+        // mesh, the counts and the mass say so, and the tissue simulates on without it.
+        ReplayOutcome out;
+        const Status s = replay(boxPlan(true), out);
+        QVERIFY2(s.ok(), s.message().c_str());
+        QVERIFY2(out.failure.empty(), out.failure.c_str());
+        QCOMPARE(out.resectedPieces, 1);
+        QCOMPARE(out.pieces, 2);  // the tissue and the chip
+        QVERIFY(out.resectedMass > 0);
+        QVERIFY2(std::abs(out.resectedVolumeFraction - (4 - 2.32) / 4) < 0.01,
+                 qPrintable(QString::number(out.resectedVolumeFraction)));
+        double top = -1e9;
+        for (int n = 0; n < out.mesh.nodeCount(); ++n)
+            top = std::max(top, out.mesh.ref(n).z());
+        QVERIFY(top < 2.4);  // nothing above the cut is left in the tissue
+        QCOMPARE(out.inverted, 0);
     }
 
     void sameResultTwice() {
