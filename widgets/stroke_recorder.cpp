@@ -139,7 +139,7 @@ Eigen::Vector4d pullOrientation(const ToolSpec& tool, const Vec3& pullDirection,
 }
 
 std::vector<ToolPose> pullPoses(const ToolSpec& tool, const Ray& ray, const Vec3& opening,
-                                const std::vector<Vec3>& tissue, double margin, double speed) {
+                                std::span<const Vec3> tissue, double margin, double speed) {
     const int tip = tipIndex(tool);
     if (tip < 0 || tissue.empty() || !(margin > 0) || !(speed > 0) || !std::isfinite(margin) ||
         !std::isfinite(speed) || !ray.origin.allFinite() || !ray.direction.allFinite() ||

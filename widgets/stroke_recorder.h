@@ -55,6 +55,7 @@
 
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -99,7 +100,7 @@ Vec3 loopTip(const ToolSpec& tool);
 /// if there is no tissue point, the directions are unusable, or speed or margin are not
 /// positive.
 std::vector<ToolPose> pullPoses(const ToolSpec& tool, const Ray& ray, const Vec3& opening,
-                                const std::vector<Vec3>& tissue, double margin, double speed);
+                                std::span<const Vec3> tissue, double margin, double speed);
 
 class StrokeRecorder : public QObject, public ViewportTool {
     Q_OBJECT
