@@ -84,7 +84,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     m_statusLabel = new QLabel(this);
     m_statusLabel->setObjectName(QStringLiteral("statusSummary"));
-    statusBar()->addPermanentWidget(m_statusLabel, 1);
+    // A normal (not permanent) widget: a temporary message (a refused edit, a save) takes its
+    // place while it is shown; a permanent one that stretches left the messages no room.
+    statusBar()->addWidget(m_statusLabel, 1);
 
     connect(m_document, &ScenarioDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ScenarioDocument::fileChanged, this, &MainWindow::updateTitle);
@@ -110,7 +112,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             showError(tr("The tissue could not be loaded."), message);
             return;
         }
-        statusBar()->showMessage(tr("The tissue or its cuts fail: %1").arg(message));
+        statusBar()->showMessage(tr("The tissue or its cuts fail: %1").arg(message), 30000);
     });
     connect(m_session, &TissueSession::editRefused, this, [this](const QString& reason) {
         statusBar()->showMessage(tr("The last edit was undone: %1").arg(reason), 20000);
