@@ -697,7 +697,7 @@
 <context>
     <name>resect::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+285"/>
+        <location filename="../app/studio/main_window.cpp" line="+287"/>
         <location line="+11"/>
         <location line="+153"/>
         <location line="+57"/>

@@ -105,7 +105,7 @@ QString TissueSession::saveBlocker() const {
         return tr("The tissue is still being derived from the last edit: save once it is shown.");
     if (!m_error.isEmpty())
         return tr("The document's tissue or cuts fail: %1").arg(m_error);
-    if (!m_current)
+    if (!m_current || !isVerified(m_document.scenario()))
         return tr("The tissue has not been derived yet.");
     return {};
 }

@@ -70,7 +70,8 @@ public:
     /// success).
     const QString& error() const { return m_error; }
     /// Why the document's state cannot be saved now (ScenarioDocument::setSaveCheck): still
-    /// being derived, or failed; empty when its state derived.
+    /// being derived, failed, or never derived (a derivation was cancelled); empty when this
+    /// very state derived.
     QString saveBlocker() const;
 
     std::shared_ptr<const TissueState> base() const { return m_base; }

@@ -346,6 +346,16 @@ private slots:
         QVERIFY(doc.scenario().cut.snap);
         QCOMPARE(doc.undoStack()->count(), 0);
         QVERIFY(session.error().isEmpty());
+        QVERIFY(session.saveBlocker().isEmpty());
+
+        // A state whose derivation was cancelled is not saved either, until it derives.
+        doc.setD(0.3);
+        session.cancel();
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QVERIFY(!session.saveBlocker().isEmpty());
+        doc.setD(0.25);
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QVERIFY2(session.saveBlocker().isEmpty(), qPrintable(session.saveBlocker()));
     }
 
     // A trial derives a scenario that is not the document's; the document takes its states
