@@ -44,7 +44,8 @@ const char* triangulationName(FaceTriangulation t) {
 QJsonObject tissueJson(const TissueSpec& t) {
     QJsonObject o;
     o["name"] = qs(t.name);
-    o["surface"] = qs(t.surface);
+    if (!t.surface.empty()) // absent: the tet mesh alone (scenario_document.h)
+        o["surface"] = qs(t.surface);
     if (!t.mesh.empty())
         o["mesh"] = qs(t.mesh);
     else

@@ -13,7 +13,9 @@
 //    "metadata": {"title": "...", "author": "...", "description": "...",
 //                 "learning_objectives": ["...", ...], "difficulty": 2},
 //    "tissues": [{"name": "polyp",
-//                 "surface": "sample:polyp",              (or a path, see below)
+//                 "surface": "sample:polyp",              (or a path, see below; may be
+//                                                          left out with "mesh": the tet
+//                                                          mesh alone, no embedded surface)
 //                 "mesh": "polyp.vtu",                    (either "mesh" ...
 //                 "meshing": {"edge_length": 0, "seed": 0},  ... or "meshing")
 //                 "material": {"density": 0.001, "stiffness": 1e6, "damping": 0},

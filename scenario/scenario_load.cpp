@@ -378,7 +378,8 @@ void readTissue(Context& c, const QJsonObject& o, const std::string& path, Tissu
     Fields f(c, o, path);
     if (f.text("name", out.name, true) && out.name.empty())
         c.error(f.at("name"), "must not be empty");
-    if (f.text("surface", out.surface, true)) {
+    // A tissue given by its tet mesh alone has no embedded surface.
+    if (f.text("surface", out.surface, !f.has("mesh"))) {
         if (out.surface.empty()) {
             c.error(f.at("surface"), "must not be empty (a file or \"sample:NAME\")");
         } else if (isSampleSource(out.surface)) {

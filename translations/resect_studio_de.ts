@@ -155,12 +155,12 @@
         <translation>Aufwand:</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+96"/>
         <source>Custom</source>
         <translation>Benutzerdefiniert</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>Starting the study...</source>
         <translation>Studie wird gestartet...</translation>
     </message>
@@ -169,8 +169,13 @@
         <source>Running: %1</source>
         <translation>Läuft: %1</translation>
     </message>
+    <message>
+        <location line="+14"/>
+        <source>Study cancelled: another document was opened.</source>
+        <translation>Studie abgebrochen: ein anderes Dokument wurde geöffnet.</translation>
+    </message>
     <message numerus="yes">
-        <location line="+17"/>
+        <location line="+11"/>
         <source>Study finished: %n row(s).</source>
         <translation>
             <numerusform>Studie abgeschlossen: %n Zeile.</numerusform>
@@ -235,7 +240,17 @@
 <context>
     <name>resect::AuthoringPanel</name>
     <message>
-        <location filename="../widgets/authoring_panel.cpp" line="+34"/>
+        <location filename="../widgets/authoring_panel.cpp" line="+20"/>
+        <source>Pull loop: click on the tissue where the loop should cut deepest; drag to turn its opening. The loop is pulled from behind the tissue towards you.</source>
+        <translation>Schlinge ziehen: Klicken Sie auf das Gewebe, wo die Schlinge am tiefsten schneiden soll; ziehen Sie, um ihre Öffnung zu drehen. Die Schlinge wird von hinter dem Gewebe zu Ihnen hin gezogen.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Recording: drag the electrode forward across the view with the left button.</source>
+        <translation>Aufzeichnung: Ziehen Sie die Elektrode mit der linken Maustaste vorwärts durch die Ansicht.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Draw sweep</source>
         <translation>Schnittfläche zeichnen</translation>
     </message>
@@ -265,7 +280,17 @@
         <translation>Ziehen Sie die Elektrode mit der linken Maustaste durch die Ansicht.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
+        <source>Pull loop</source>
+        <translation>Schlinge ziehen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Click on the tissue where the loop should cut deepest (drag to turn its opening): the loop is pulled from behind the tissue towards you, as a resectoscope&apos;s loop electrode, and takes off what lies inside it.</source>
+        <translation>Klicken Sie auf das Gewebe, wo die Schlinge am tiefsten schneiden soll (ziehen, um ihre Öffnung zu drehen): Die Schlinge wird wie die Schlingenelektrode eines Resektoskops von hinter dem Gewebe zu Ihnen hin gezogen und trägt ab, was in ihr liegt.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Finish</source>
         <translation>Fertigstellen</translation>
     </message>
@@ -295,23 +320,18 @@
         <translation>Die zuletzt aufgezeichnete Schnittbewegung erneut abspielen.</translation>
     </message>
     <message>
-        <location line="+40"/>
-        <location line="+77"/>
+        <location line="+51"/>
+        <location line="+85"/>
         <source>Draw a sweep surface or record a stroke.</source>
         <translation>Zeichnen Sie eine Schnittfläche oder zeichnen Sie eine Schnittbewegung auf.</translation>
     </message>
     <message>
-        <location line="-28"/>
-        <source>Recording: drag the electrode across the view with the left button.</source>
-        <translation>Aufzeichnung: Ziehen Sie die Elektrode mit der linken Maustaste durch die Ansicht.</translation>
-    </message>
-    <message>
-        <location line="+18"/>
+        <location line="-10"/>
         <source>Sweep surface handed on.</source>
         <translation>Schnittfläche übergeben.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+31"/>
         <source>Stroke recorded: %1 poses over %2 s.</source>
         <translation>Schnittbewegung aufgezeichnet: %1 Posen über %2 s.</translation>
     </message>
@@ -329,7 +349,7 @@
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+17"/>
         <source>Method</source>
         <translation>Methode</translation>
     </message>
@@ -489,14 +509,24 @@
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+59"/>
+        <source>The last edit was undone: %1</source>
+        <translation>Die letzte Änderung wurde rückgängig gemacht: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The tissue or its cuts fail: %1</source>
+        <translation>Das Gewebe oder seine Schnitte scheitern: %1</translation>
+    </message>
+    <message>
+        <location line="+55"/>
         <source>No pending cut. Draw a sweep or record a stroke to preview a cut.</source>
         <translation>Kein ausstehender Schnitt. Zeichnen Sie eine Schnittfläche oder zeichnen Sie eine Schnittbewegung auf, um eine Vorschau des Schnitts zu sehen.</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>The cut fails: %1</source>
-        <translation>Der Schnitt schlägt fehl: %1</translation>
+        <location line="+3"/>
+        <source>The cut fails, it cannot be applied: %1</source>
+        <translation>Der Schnitt scheitert und kann nicht angewendet werden: %1</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -523,7 +553,7 @@
 <context>
     <name>resect::CutPreview</name>
     <message>
-        <location filename="../widgets/cut_preview.cpp" line="+84"/>
+        <location filename="../widgets/cut_preview.cpp" line="+79"/>
         <source>There is no cut to apply: draw a sweep or record a stroke first.</source>
         <translation>Es gibt keinen Schnitt zum Anwenden: Zeichnen Sie zuerst eine Schnittfläche oder zeichnen Sie eine Schnittbewegung auf.</translation>
     </message>
@@ -538,7 +568,7 @@
         <translation>Die Vorschau des Schnitts ist noch nicht fertig: Wenden Sie ihn an, sobald sie angezeigt wird.</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+74"/>
         <source>Internal error: %1</source>
         <translation>Interner Fehler: %1</translation>
     </message>
@@ -546,6 +576,14 @@
         <location line="+2"/>
         <source>Internal error</source>
         <translation>Interner Fehler</translation>
+    </message>
+</context>
+<context>
+    <name>resect::DocumentOpener</name>
+    <message>
+        <location filename="../widgets/document_opener.cpp" line="+57"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -659,31 +697,20 @@
 <context>
     <name>resect::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+267"/>
+        <location filename="../app/studio/main_window.cpp" line="+287"/>
         <location line="+11"/>
-        <location line="+134"/>
+        <location line="+153"/>
         <location line="+57"/>
         <source>Resect Studio</source>
         <translation>Resect Studio</translation>
     </message>
     <message>
-        <location line="-322"/>
+        <location line="-342"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location line="-44"/>
-        <source>The tissue could not be loaded or cut.</source>
-        <translation>Das Gewebe konnte nicht geladen oder geschnitten werden.</translation>
-    </message>
-    <message>
-        <location line="+30"/>
-        <location line="+55"/>
-        <source>The cut was not applied.</source>
-        <translation>Der Schnitt wurde nicht angewendet.</translation>
-    </message>
-    <message>
-        <location line="-40"/>
+        <location line="+1"/>
         <source>&amp;New from sample</source>
         <translation>&amp;Neu aus Beispiel</translation>
     </message>
@@ -758,7 +785,7 @@
         <translation>Ausstehenden Schnitt &amp;anwenden</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>&amp;Discard pending cut</source>
         <translation>Ausstehenden Schnitt &amp;verwerfen</translation>
     </message>
@@ -843,12 +870,12 @@
         <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>Could not create the scenario.</source>
         <translation>Das Szenario konnte nicht erstellt werden.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+40"/>
         <location line="+10"/>
         <source>The scenario was not saved.</source>
         <translation>Das Szenario wurde nicht gespeichert.</translation>
@@ -890,12 +917,7 @@
         <translation>Oberflächen (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;Tetraedernetze (*.vtu *.msh *.node *.ele);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Could not import %1.</source>
-        <translation>%1 konnte nicht importiert werden.</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+12"/>
         <location line="+7"/>
         <location line="+21"/>
         <source>The scenario was not exported.</source>
@@ -985,7 +1007,22 @@
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="-152"/>
+        <location line="-394"/>
+        <source>The tissue could not be loaded.</source>
+        <translation>Das Gewebe konnte nicht geladen werden.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The tissue or its cuts fail: %1</source>
+        <translation>Das Gewebe oder seine Schnitte scheitern: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The last edit was undone: %1</source>
+        <translation>Die letzte Änderung wurde rückgängig gemacht: %1</translation>
+    </message>
+    <message>
+        <location line="+224"/>
         <source>Could not open %1.</source>
         <translation>%1 konnte nicht geöffnet werden.</translation>
     </message>
@@ -1230,7 +1267,7 @@
         <translation>Schnittfläche entfernen</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+28"/>
         <source>Switch effect on</source>
         <translation>Effekt einschalten</translation>
     </message>
@@ -1253,22 +1290,22 @@
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+31"/>
         <source>unknown sample &quot;%1&quot; (known: %2)</source>
         <translation>unbekanntes Beispiel „%1“ (bekannt: %2)</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+46"/>
         <source>New %1 scenario</source>
         <translation>Neues Szenario %1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="-27"/>
         <source>%1: no such file</source>
         <translation>%1: Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+49"/>
         <source>the document has no file name yet (use Save As)</source>
         <translation>das Dokument hat noch keinen Dateinamen (Speichern unter verwenden)</translation>
     </message>
@@ -1278,7 +1315,7 @@
         <translation>kein Dateiname angegeben</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+103"/>
         <source>cannot create the autosave folder &quot;%1&quot;</source>
         <translation>der Ordner für die automatische Sicherung „%1“ kann nicht angelegt werden</translation>
     </message>
@@ -1291,7 +1328,7 @@
 <context>
     <name>resect::SimulationController</name>
     <message>
-        <location filename="../widgets/simulation_controller.cpp" line="+163"/>
+        <location filename="../widgets/simulation_controller.cpp" line="+169"/>
         <source>The simulation has no usable time step.</source>
         <translation>Die Simulation hat keinen verwendbaren Zeitschritt.</translation>
     </message>
@@ -1413,9 +1450,24 @@
 <context>
     <name>resect::StrokeRecorder</name>
     <message>
-        <location filename="../widgets/stroke_recorder.cpp" line="+254"/>
-        <source>Nothing was recorded: hold the left button and drag the electrode across the view.</source>
-        <translation>Es wurde nichts aufgezeichnet: Halten Sie die linke Maustaste gedrückt und ziehen Sie die Elektrode durch die Ansicht.</translation>
+        <location filename="../widgets/stroke_recorder.cpp" line="+333"/>
+        <source>Move forward along the pull to continue the stroke: no pose is taken behind its end (the stroke would cut through itself).</source>
+        <translation>Bewegen Sie die Maus in Zugrichtung vorwärts, um die Schnittbewegung fortzusetzen: Hinter ihrem Ende wird keine Pose aufgenommen (die Schnittbewegung würde sich selbst durchschneiden).</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>There is no tissue to pull the loop through.</source>
+        <translation>Es gibt kein Gewebe, durch das die Schlinge gezogen werden kann.</translation>
+    </message>
+    <message>
+        <location line="+81"/>
+        <source>The loop cannot be pulled here: it needs a tool with a loop curve and a tissue behind the cursor.</source>
+        <translation>Die Schlinge kann hier nicht gezogen werden: Sie braucht ein Werkzeug mit einer Schlingenkurve und Gewebe hinter dem Mauszeiger.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The stroke is too short to cut: hold the left button and drag the electrode forward across the view.</source>
+        <translation>Die Schnittbewegung ist zu kurz zum Schneiden: Halten Sie die linke Maustaste gedrückt und ziehen Sie die Elektrode vorwärts durch die Ansicht.</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -1517,7 +1569,33 @@
 <context>
     <name>resect::TissueSession</name>
     <message>
-        <location filename="../widgets/tissue_session.cpp" line="+157"/>
+        <location filename="../widgets/tissue_session.cpp" line="+103"/>
+        <source>There is no tissue to save.</source>
+        <translation>Es gibt kein Gewebe zum Speichern.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The tissue is still being derived from the last edit: save once it is shown.</source>
+        <translation>Das Gewebe wird noch aus der letzten Änderung abgeleitet: Speichern Sie, sobald es angezeigt wird.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The document&apos;s tissue or cuts fail: %1</source>
+        <translation>Gewebe oder Schnitte des Dokuments scheitern: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The tissue has not been derived yet.</source>
+        <translation>Das Gewebe wurde noch nicht abgeleitet.</translation>
+    </message>
+    <message>
+        <location line="+66"/>
+        <location line="+268"/>
+        <source>Opening was cancelled.</source>
+        <translation>Das Öffnen wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <location line="-182"/>
         <source>Internal error: %1</source>
         <translation>Interner Fehler: %1</translation>
     </message>
@@ -1527,7 +1605,12 @@
         <translation>Interner Fehler</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+18"/>
+        <source>the scenario has no tissue</source>
+        <translation>das Szenario hat kein Gewebe</translation>
+    </message>
+    <message>
+        <location line="+65"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

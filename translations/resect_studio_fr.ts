@@ -155,12 +155,12 @@
         <translation>Coût :</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+96"/>
         <source>Custom</source>
         <translation>Personnalisé</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>Starting the study...</source>
         <translation>Démarrage de l&apos;étude...</translation>
     </message>
@@ -169,8 +169,13 @@
         <source>Running: %1</source>
         <translation>En cours : %1</translation>
     </message>
+    <message>
+        <location line="+14"/>
+        <source>Study cancelled: another document was opened.</source>
+        <translation>Étude annulée : un autre document a été ouvert.</translation>
+    </message>
     <message numerus="yes">
-        <location line="+17"/>
+        <location line="+11"/>
         <source>Study finished: %n row(s).</source>
         <translation>
             <numerusform>Étude terminée : %n ligne.</numerusform>
@@ -235,7 +240,17 @@
 <context>
     <name>resect::AuthoringPanel</name>
     <message>
-        <location filename="../widgets/authoring_panel.cpp" line="+34"/>
+        <location filename="../widgets/authoring_panel.cpp" line="+20"/>
+        <source>Pull loop: click on the tissue where the loop should cut deepest; drag to turn its opening. The loop is pulled from behind the tissue towards you.</source>
+        <translation>Tirer l&apos;anse : cliquez sur le tissu là où l&apos;anse doit couper le plus profondément ; faites glisser pour tourner son ouverture. L&apos;anse est tirée de derrière le tissu vers vous.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Recording: drag the electrode forward across the view with the left button.</source>
+        <translation>Enregistrement : faites glisser l&apos;électrode vers l&apos;avant à travers la vue avec le bouton gauche.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Draw sweep</source>
         <translation>Dessiner une surface de balayage</translation>
     </message>
@@ -265,7 +280,17 @@
         <translation>Faites glisser l&apos;électrode à travers la vue avec le bouton gauche.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
+        <source>Pull loop</source>
+        <translation>Tirer l&apos;anse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Click on the tissue where the loop should cut deepest (drag to turn its opening): the loop is pulled from behind the tissue towards you, as a resectoscope&apos;s loop electrode, and takes off what lies inside it.</source>
+        <translation>Cliquez sur le tissu là où l&apos;anse doit couper le plus profondément (faites glisser pour tourner son ouverture) : l&apos;anse est tirée de derrière le tissu vers vous, comme l&apos;anse électrique d&apos;un résectoscope, et enlève ce qui se trouve à l&apos;intérieur.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Finish</source>
         <translation>Terminer</translation>
     </message>
@@ -295,23 +320,18 @@
         <translation>Rejouer le dernier geste enregistré.</translation>
     </message>
     <message>
-        <location line="+40"/>
-        <location line="+77"/>
+        <location line="+51"/>
+        <location line="+85"/>
         <source>Draw a sweep surface or record a stroke.</source>
         <translation>Dessinez une surface de balayage ou enregistrez un geste de coupe.</translation>
     </message>
     <message>
-        <location line="-28"/>
-        <source>Recording: drag the electrode across the view with the left button.</source>
-        <translation>Enregistrement : faites glisser l&apos;électrode à travers la vue avec le bouton gauche.</translation>
-    </message>
-    <message>
-        <location line="+18"/>
+        <location line="-10"/>
         <source>Sweep surface handed on.</source>
         <translation>Surface de balayage transmise.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+31"/>
         <source>Stroke recorded: %1 poses over %2 s.</source>
         <translation>Geste enregistré : %1 poses sur %2 s.</translation>
     </message>
@@ -329,7 +349,7 @@
         <translation>%1 → %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+17"/>
         <source>Method</source>
         <translation>Méthode</translation>
     </message>
@@ -489,14 +509,24 @@
         <translation>A&amp;bandonner</translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+59"/>
+        <source>The last edit was undone: %1</source>
+        <translation>La dernière modification a été annulée : %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The tissue or its cuts fail: %1</source>
+        <translation>Le tissu ou ses coupes échouent : %1</translation>
+    </message>
+    <message>
+        <location line="+55"/>
         <source>No pending cut. Draw a sweep or record a stroke to preview a cut.</source>
         <translation>Aucune coupe en attente. Dessinez une surface de balayage ou enregistrez un geste de coupe pour afficher l&apos;aperçu d&apos;une coupe.</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>The cut fails: %1</source>
-        <translation>La coupe échoue : %1</translation>
+        <location line="+3"/>
+        <source>The cut fails, it cannot be applied: %1</source>
+        <translation>La coupe échoue, elle ne peut pas être appliquée : %1</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -523,7 +553,7 @@
 <context>
     <name>resect::CutPreview</name>
     <message>
-        <location filename="../widgets/cut_preview.cpp" line="+84"/>
+        <location filename="../widgets/cut_preview.cpp" line="+79"/>
         <source>There is no cut to apply: draw a sweep or record a stroke first.</source>
         <translation>Il n&apos;y a aucune coupe à appliquer : dessinez d&apos;abord une surface de balayage ou enregistrez un geste de coupe.</translation>
     </message>
@@ -538,7 +568,7 @@
         <translation>L&apos;aperçu de la coupe n&apos;est pas encore prêt : appliquez-la une fois qu&apos;il est affiché.</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+74"/>
         <source>Internal error: %1</source>
         <translation>Erreur interne : %1</translation>
     </message>
@@ -546,6 +576,14 @@
         <location line="+2"/>
         <source>Internal error</source>
         <translation>Erreur interne</translation>
+    </message>
+</context>
+<context>
+    <name>resect::DocumentOpener</name>
+    <message>
+        <location filename="../widgets/document_opener.cpp" line="+57"/>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
     </message>
 </context>
 <context>
@@ -659,31 +697,20 @@
 <context>
     <name>resect::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+267"/>
+        <location filename="../app/studio/main_window.cpp" line="+287"/>
         <location line="+11"/>
-        <location line="+134"/>
+        <location line="+153"/>
         <location line="+57"/>
         <source>Resect Studio</source>
         <translation>Resect Studio</translation>
     </message>
     <message>
-        <location line="-322"/>
+        <location line="-342"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location line="-44"/>
-        <source>The tissue could not be loaded or cut.</source>
-        <translation>Le tissu n&apos;a pas pu être chargé ou coupé.</translation>
-    </message>
-    <message>
-        <location line="+30"/>
-        <location line="+55"/>
-        <source>The cut was not applied.</source>
-        <translation>La coupe n&apos;a pas été appliquée.</translation>
-    </message>
-    <message>
-        <location line="-40"/>
+        <location line="+1"/>
         <source>&amp;New from sample</source>
         <translation>&amp;Nouveau à partir d&apos;un exemple</translation>
     </message>
@@ -758,7 +785,7 @@
         <translation>&amp;Appliquer la coupe en attente</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>&amp;Discard pending cut</source>
         <translation>A&amp;bandonner la coupe en attente</translation>
     </message>
@@ -843,12 +870,12 @@
         <translation>%1 contient des modifications non enregistrées. Les enregistrer ?</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>Could not create the scenario.</source>
         <translation>Impossible de créer le scénario.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+40"/>
         <location line="+10"/>
         <source>The scenario was not saved.</source>
         <translation>Le scénario n&apos;a pas été enregistré.</translation>
@@ -890,12 +917,7 @@
         <translation>Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;Maillages tétraédriques (*.vtu *.msh *.node *.ele);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Could not import %1.</source>
-        <translation>Impossible d&apos;importer %1.</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+12"/>
         <location line="+7"/>
         <location line="+21"/>
         <source>The scenario was not exported.</source>
@@ -985,7 +1007,22 @@
         <translation>Annuler</translation>
     </message>
     <message>
-        <location line="-152"/>
+        <location line="-394"/>
+        <source>The tissue could not be loaded.</source>
+        <translation>Le tissu n&apos;a pas pu être chargé.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The tissue or its cuts fail: %1</source>
+        <translation>Le tissu ou ses coupes échouent : %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The last edit was undone: %1</source>
+        <translation>La dernière modification a été annulée : %1</translation>
+    </message>
+    <message>
+        <location line="+224"/>
         <source>Could not open %1.</source>
         <translation>Impossible d&apos;ouvrir %1.</translation>
     </message>
@@ -1230,7 +1267,7 @@
         <translation>Supprimer la surface de balayage</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+28"/>
         <source>Switch effect on</source>
         <translation>Activer l&apos;effet</translation>
     </message>
@@ -1253,22 +1290,22 @@
         <translation>sans titre</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+31"/>
         <source>unknown sample &quot;%1&quot; (known: %2)</source>
         <translation>exemple « %1 » inconnu (connus : %2)</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+46"/>
         <source>New %1 scenario</source>
         <translation>Nouveau scénario %1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="-27"/>
         <source>%1: no such file</source>
         <translation>%1 : fichier introuvable</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+49"/>
         <source>the document has no file name yet (use Save As)</source>
         <translation>le document n&apos;a pas encore de nom de fichier (utilisez Enregistrer sous)</translation>
     </message>
@@ -1278,7 +1315,7 @@
         <translation>aucun nom de fichier indiqué</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+103"/>
         <source>cannot create the autosave folder &quot;%1&quot;</source>
         <translation>impossible de créer le dossier de sauvegarde automatique « %1 »</translation>
     </message>
@@ -1291,7 +1328,7 @@
 <context>
     <name>resect::SimulationController</name>
     <message>
-        <location filename="../widgets/simulation_controller.cpp" line="+163"/>
+        <location filename="../widgets/simulation_controller.cpp" line="+169"/>
         <source>The simulation has no usable time step.</source>
         <translation>La simulation n&apos;a pas de pas de temps utilisable.</translation>
     </message>
@@ -1413,9 +1450,24 @@
 <context>
     <name>resect::StrokeRecorder</name>
     <message>
-        <location filename="../widgets/stroke_recorder.cpp" line="+254"/>
-        <source>Nothing was recorded: hold the left button and drag the electrode across the view.</source>
-        <translation>Rien n&apos;a été enregistré : maintenez le bouton gauche enfoncé et faites glisser l&apos;électrode à travers la vue.</translation>
+        <location filename="../widgets/stroke_recorder.cpp" line="+333"/>
+        <source>Move forward along the pull to continue the stroke: no pose is taken behind its end (the stroke would cut through itself).</source>
+        <translation>Avancez dans le sens du tirage pour continuer le geste : aucune pose n&apos;est prise derrière sa fin (le geste se couperait lui-même).</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>There is no tissue to pull the loop through.</source>
+        <translation>Il n&apos;y a pas de tissu à travers lequel tirer l&apos;anse.</translation>
+    </message>
+    <message>
+        <location line="+81"/>
+        <source>The loop cannot be pulled here: it needs a tool with a loop curve and a tissue behind the cursor.</source>
+        <translation>L&apos;anse ne peut pas être tirée ici : il faut un outil avec une courbe d&apos;anse et un tissu derrière le curseur.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The stroke is too short to cut: hold the left button and drag the electrode forward across the view.</source>
+        <translation>Le geste est trop court pour couper : maintenez le bouton gauche et faites glisser l&apos;électrode vers l&apos;avant à travers la vue.</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -1517,7 +1569,33 @@
 <context>
     <name>resect::TissueSession</name>
     <message>
-        <location filename="../widgets/tissue_session.cpp" line="+157"/>
+        <location filename="../widgets/tissue_session.cpp" line="+103"/>
+        <source>There is no tissue to save.</source>
+        <translation>Il n&apos;y a pas de tissu à enregistrer.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The tissue is still being derived from the last edit: save once it is shown.</source>
+        <translation>Le tissu est encore en cours de calcul depuis la dernière modification : enregistrez une fois qu&apos;il est affiché.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The document&apos;s tissue or cuts fail: %1</source>
+        <translation>Le tissu ou les coupes du document échouent : %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The tissue has not been derived yet.</source>
+        <translation>Le tissu n&apos;a pas encore été calculé.</translation>
+    </message>
+    <message>
+        <location line="+66"/>
+        <location line="+268"/>
+        <source>Opening was cancelled.</source>
+        <translation>L&apos;ouverture a été annulée.</translation>
+    </message>
+    <message>
+        <location line="-182"/>
         <source>Internal error: %1</source>
         <translation>Erreur interne : %1</translation>
     </message>
@@ -1527,7 +1605,12 @@
         <translation>Erreur interne</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+18"/>
+        <source>the scenario has no tissue</source>
+        <translation>le scénario n&apos;a pas de tissu</translation>
+    </message>
+    <message>
+        <location line="+65"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>

@@ -137,6 +137,21 @@ void AccuracyPanel::clearTissue() {
     showIdleStatus();
 }
 
+void AccuracyPanel::clearResults() {
+    if (m_running) {
+        m_cancel = true;
+        m_dropResult = true;
+    }
+    m_rows.clear();
+    m_chart->setRows({});
+    m_selected = -1;
+    m_studied = false;
+    m_progress->setValue(0);
+    updateState();
+    showIdleStatus();
+    emit rowSelected(-1);
+}
+
 CutSettings AccuracyPanel::cutSettingsForRow(const StudyRow& row, const CutSettings& base) {
     CutSettings s = base;
     if (row.method == "subdivision") {
@@ -185,6 +200,7 @@ void AccuracyPanel::run() {
     if (m_thread.joinable())
         m_thread.join();
     m_cancel = false;
+    m_dropResult = false;
     m_running = true;
     m_lastPermille = -1;
     m_lastStage.clear();
@@ -235,6 +251,14 @@ void AccuracyPanel::finish(Status status, std::vector<StudyRow> rows) {
     if (m_thread.joinable())
         m_thread.join();
     m_running = false;
+    if (m_dropResult) {
+        // The study was of a document that is gone.
+        m_dropResult = false;
+        updateState();
+        showIdleStatus();
+        emit studyFinished(false, tr("Study cancelled: another document was opened."));
+        return;
+    }
     m_studied = true;
     m_rows = std::move(rows);
     m_chart->setRows(m_rows);

@@ -55,6 +55,9 @@ public:
     void setTissue(const TetMesh& mesh, SweepSurface sweep, const QString& name);
     /// No tissue: Run is disabled.
     void clearTissue();
+    /// Forgets the study shown (a new document): cancels a running one (its result is
+    /// dropped), clears the rows, the chart, the selection and the status line.
+    void clearResults();
     bool hasTissue() const { return m_mesh != nullptr; }
 
     /// The cut settings that Adopt starts from (the scenario's current ones): adoptRequested
@@ -114,6 +117,7 @@ private:
     std::thread m_thread;
     std::atomic<bool> m_cancel{false};
     bool m_running = false;
+    bool m_dropResult = false; ///< clearResults() during a study: its result is not shown
     bool m_studied = false; ///< a study has finished (its message stays in the status line)
     // Last progress posted (worker thread only), to post only changes.
     int m_lastPermille = -1;

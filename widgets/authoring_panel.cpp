@@ -14,6 +14,16 @@ namespace resect {
 
 namespace {
 
+/// What to do while the recorder is armed with `motion`.
+QString recordingStatus(StrokeRecorder::Motion motion) {
+    return motion == StrokeRecorder::Motion::Pull
+               ? AuthoringPanel::tr("Pull loop: click on the tissue where the loop should cut "
+                                    "deepest; drag to turn its opening. The loop is pulled from "
+                                    "behind the tissue towards you.")
+               : AuthoringPanel::tr("Recording: drag the electrode forward across the view with "
+                                    "the left button.");
+}
+
 QPushButton* makeButton(const QString& text, const char* name, const QString& tip,
                         QWidget* parent) {
     auto* button = new QPushButton(text, parent);
@@ -42,6 +52,13 @@ AuthoringPanel::AuthoringPanel(VtkViewport* viewport, QWidget* parent)
     m_record = makeButton(tr("Record stroke"), "recordStrokeButton",
                           tr("Drag the electrode across the view with the left button."), this);
     m_record->setCheckable(true);
+    m_pull =
+        makeButton(tr("Pull loop"), "pullLoopButton",
+                   tr("Click on the tissue where the loop should cut deepest (drag to turn "
+                      "its opening): the loop is pulled from behind the tissue towards you, "
+                      "as a resectoscope's loop electrode, and takes off what lies inside it."),
+                   this);
+    m_pull->setCheckable(true);
     m_finish = makeButton(tr("Finish"), "finishButton", tr("Use the drawn sweep surface."),
                           this);
     m_clear = makeButton(tr("Clear"), "clearButton",
@@ -57,8 +74,9 @@ AuthoringPanel::AuthoringPanel(VtkViewport* viewport, QWidget* parent)
     grid->addWidget(m_endCurve, 0, 1);
     grid->addWidget(m_finish, 0, 2);
     grid->addWidget(m_record, 1, 0);
-    grid->addWidget(m_play, 1, 1);
-    grid->addWidget(m_clear, 1, 2);
+    grid->addWidget(m_pull, 1, 1);
+    grid->addWidget(m_play, 1, 2);
+    grid->addWidget(m_clear, 2, 2);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(grid);
     layout->addWidget(m_status);
@@ -70,7 +88,10 @@ AuthoringPanel::AuthoringPanel(VtkViewport* viewport, QWidget* parent)
         m_editor->beginEndCurve();
         updateSweepStatus();
     });
-    connect(m_record, &QPushButton::toggled, this, &AuthoringPanel::setRecording);
+    connect(m_record, &QPushButton::toggled, this,
+            [this](bool on) { setRecording(on, int(StrokeRecorder::Motion::Drag)); });
+    connect(m_pull, &QPushButton::toggled, this,
+            [this](bool on) { setRecording(on, int(StrokeRecorder::Motion::Pull)); });
     connect(m_finish, &QPushButton::clicked, this, &AuthoringPanel::finish);
     connect(m_clear, &QPushButton::clicked, this, &AuthoringPanel::clearAll);
     connect(m_play, &QPushButton::clicked, this, &AuthoringPanel::playStroke);
@@ -81,8 +102,15 @@ AuthoringPanel::AuthoringPanel(VtkViewport* viewport, QWidget* parent)
             &AuthoringPanel::onStrokeRecorded);
     connect(m_recorder, &StrokeRecorder::recordingFailed, this,
             &AuthoringPanel::onRecordingFailed);
-    connect(m_recorder, &StrokeRecorder::recordingChanged, this,
-            [this](bool armed) { m_record->setChecked(armed); });
+    connect(m_recorder, &StrokeRecorder::recordingChanged, this, [this](bool armed) {
+        if (!armed) {
+            m_record->setChecked(false);
+            m_pull->setChecked(false);
+        }
+    });
+    connect(m_recorder, &StrokeRecorder::hintChanged, this, [this](const QString& hint) {
+        setStatus(hint.isEmpty() ? recordingStatus(m_recorder->motion()) : hint);
+    });
 
     m_endCurve->setEnabled(false);
     m_finish->setEnabled(false);
@@ -119,6 +147,7 @@ QString AuthoringPanel::statusText() const {
 void AuthoringPanel::setDrawing(bool on) {
     if (on) {
         m_record->setChecked(false);
+        m_pull->setChecked(false);
         if (m_viewport != nullptr)
             m_viewport->setTool(m_editor);
         updateSweepStatus();
@@ -130,19 +159,26 @@ void AuthoringPanel::setDrawing(bool on) {
         m_draw->setChecked(on);
 }
 
-void AuthoringPanel::setRecording(bool on) {
+void AuthoringPanel::setRecording(bool on, int motionValue) {
+    const auto motion = static_cast<StrokeRecorder::Motion>(motionValue);
+    QPushButton* button = motion == StrokeRecorder::Motion::Pull ? m_pull : m_record;
+    QPushButton* other = button == m_pull ? m_record : m_pull;
     if (on) {
         m_draw->setChecked(false);
+        other->setChecked(false); // disarms first; this button arms again below
         m_player->pause();
+        m_recorder->setMotion(motion);
         if (m_viewport != nullptr)
             m_viewport->setTool(m_recorder);
-        setStatus(tr("Recording: drag the electrode across the view with the left button."));
+        setStatus(recordingStatus(motion));
+    } else if (other->isChecked()) {
+        return; // the other motion took over the recorder
     } else if (m_viewport != nullptr && m_viewport->tool() == m_recorder) {
         m_viewport->setTool(nullptr);
     }
     m_recorder->setRecording(on);
-    if (m_record->isChecked() != on)
-        m_record->setChecked(on);
+    if (button->isChecked() != on)
+        button->setChecked(on);
 }
 
 void AuthoringPanel::finish() {
@@ -165,6 +201,13 @@ void AuthoringPanel::clearAll() {
     m_lastStroke = Stroke{};
     m_play->setEnabled(false);
     setStatus(tr("Draw a sweep surface or record a stroke."));
+}
+
+void AuthoringPanel::reset() {
+    m_draw->setChecked(false);
+    m_record->setChecked(false);
+    m_pull->setChecked(false);
+    clearAll();
 }
 
 void AuthoringPanel::playStroke() {

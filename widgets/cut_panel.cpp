@@ -43,6 +43,13 @@ CutPanel::CutPanel(ScenarioDocument& document, TissueSession& session, CutPrevie
     : QWidget(parent), m_document(document), m_session(session), m_preview(preview) {
     setObjectName(QStringLiteral("cutPanel"));
     auto* layout = new QVBoxLayout(this);
+    m_notice = new QLabel(this);
+    m_notice->setObjectName(QStringLiteral("cutNotice"));
+    m_notice->setWordWrap(true);
+    m_notice->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_notice->setStyleSheet(QStringLiteral("QLabel { color: #a40000; font-weight: bold; }"));
+    m_notice->hide();
+    layout->addWidget(m_notice);
 
     auto* settings = new QGroupBox(tr("Method"), this);
     auto* form = new QFormLayout(settings);
@@ -156,6 +163,16 @@ CutPanel::CutPanel(ScenarioDocument& document, TissueSession& session, CutPrevie
     connect(&m_preview, &CutPreview::changed, this, &CutPanel::updatePreview);
     connect(&m_preview, &CutPreview::busyChanged, this, &CutPanel::updatePreview);
     connect(&m_session, &TissueSession::currentChanged, this, &CutPanel::updatePreview);
+    connect(&m_session, &TissueSession::busyChanged, this, &CutPanel::updatePreview);
+    // Refusals are reported here, in place; any later edit or a new document clears them
+    // (the undo that refuses an edit comes before its report).
+    connect(&m_document, &ScenarioDocument::changed, this, [this] { setNotice(QString()); });
+    connect(&m_session, &TissueSession::editRefused, this, [this](const QString& reason) {
+        setNotice(tr("The last edit was undone: %1").arg(reason));
+    });
+    connect(&m_session, &TissueSession::failed, this, [this](const QString& message) {
+        setNotice(tr("The tissue or its cuts fail: %1").arg(message));
+    });
     syncFromDocument();
     updatePreview();
 }
@@ -167,6 +184,15 @@ QLabel* CutPanel::addValue(QFormLayout* form, const QString& key, const QString&
     form->addRow(label, value);
     m_values.emplace_back(key, value);
     return value;
+}
+
+QString CutPanel::notice() const {
+    return m_notice->text();
+}
+
+void CutPanel::setNotice(const QString& text) {
+    m_notice->setText(text);
+    m_notice->setVisible(!text.isEmpty());
 }
 
 QString CutPanel::previewValue(const QString& key) const {
@@ -197,13 +223,14 @@ void CutPanel::updatePreview() {
     const auto current = m_session.current();
     const auto preview = m_preview.preview();
     const bool pending = m_preview.hasPending();
-    m_apply->setEnabled(pending && m_preview.isReady());
+    m_apply->setEnabled(m_preview.canApply());
     m_discard->setEnabled(pending);
     if (!pending)
         m_previewStatus->setText(tr("No pending cut. Draw a sweep or record a stroke to preview a cut."));
     else if (!m_preview.error().isEmpty())
-        m_previewStatus->setText(tr("The cut fails: %1").arg(m_preview.error()));
-    else if (!m_preview.isReady())
+        m_previewStatus->setText(
+            tr("The cut fails, it cannot be applied: %1").arg(m_preview.error()));
+    else if (!m_preview.isReady() || m_session.isBusy())
         m_previewStatus->setText(tr("Computing the preview..."));
     else
         m_previewStatus->setText(tr("Preview of the pending cut (not applied yet)."));

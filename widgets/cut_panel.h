@@ -8,7 +8,13 @@
 // Edits go through the ScenarioDocument (undoable; consecutive changes of one number merge
 // into one undo step); the panel follows the document on undo and redo. The pending cut and
 // its preview are CutPreview's, which recomputes the preview whenever the current tissue
-// (TissueSession) changes, settings included; Apply and Discard ask it.
+// (TissueSession) changes, settings included; Apply and Discard ask it. Apply is enabled only
+// while the preview on show succeeded and is up to date (CutPreview::canApply); otherwise the
+// preview's status line (previewStatus) says why, in place.
+//
+// The notice line (cutNotice) shows, in place of a dialog, why the document refused the last
+// edit (TissueSession::editRefused: a stroke, sweep or setting whose cuts fail was undone) or
+// why its tissue fails; it clears at the next edit or a new document.
 
 #include <QWidget>
 
@@ -36,6 +42,8 @@ public:
     /// "cut_nodes", "snapped_nodes", "decomposed_tets", "separated_tets", "pieces",
     /// "min_radius_ratio", "stable_dt", "total_ms"); empty when there is no preview.
     QString previewValue(const QString& key) const;
+    /// The notice line's text (empty when there is nothing to report).
+    QString notice() const;
 
 signals:
     /// Apply failed (no pending cut, or an invalid one); `message` says why.
@@ -45,6 +53,7 @@ private:
     void syncFromDocument();
     void updatePreview();
     void apply();
+    void setNotice(const QString& text);
     QLabel* addValue(QFormLayout* form, const QString& key, const QString& label);
 
     ScenarioDocument& m_document;
@@ -62,6 +71,7 @@ private:
     QDoubleSpinBox* m_relaxDamping = nullptr;
     QSpinBox* m_rings = nullptr;
 
+    QLabel* m_notice = nullptr;
     QLabel* m_previewStatus = nullptr;
     QPushButton* m_apply = nullptr;
     QPushButton* m_discard = nullptr;

@@ -74,18 +74,22 @@ void CutPreview::discard() {
         emit changed();
 }
 
+QString CutPreview::applyBlocker() const {
+    if (!hasPending())
+        return tr("There is no cut to apply: draw a sweep or record a stroke first.");
+    if (!m_error.isEmpty())
+        return tr("The cut cannot be applied: %1").arg(m_error);
+    if (!isReady() || m_session.isBusy())
+        return tr("The preview of the cut is not ready yet: apply it once it is shown.");
+    return {};
+}
+
 bool CutPreview::apply(QString* error) {
-    const auto refuse = [error](const QString& reason) {
+    if (const QString reason = applyBlocker(); !reason.isEmpty()) {
         if (error)
             *error = reason;
         return false;
-    };
-    if (!hasPending())
-        return refuse(tr("There is no cut to apply: draw a sweep or record a stroke first."));
-    if (!m_error.isEmpty())
-        return refuse(tr("The cut cannot be applied: %1").arg(m_error));
-    if (!isReady())
-        return refuse(tr("The preview of the cut is not ready yet: apply it once it is shown."));
+    }
     const std::optional<SweepSpec> sweep = std::move(m_sweep);
     const std::optional<Stroke> stroke = std::move(m_stroke);
     // The pending cut becomes document state: the session derives the new current state from

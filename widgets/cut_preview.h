@@ -54,9 +54,16 @@ public:
     /// state (no newer computation is due).
     bool isReady() const { return m_preview && m_shownRequest == m_request; }
 
+    /// True when apply() would add the pending cut: its preview on the session's current state
+    /// is shown and succeeded, and the session is not deriving a newer state (Apply is
+    /// enabled exactly then: it follows changed() and the session's busyChanged()).
+    bool canApply() const { return applyBlocker().isEmpty(); }
+    /// Why apply() would refuse now, as the cut panel shows it; empty when canApply().
+    QString applyBlocker() const;
+
     /// Adds the pending cut to the document (one undoable edit: addStroke or addSweep) and
-    /// clears it. False, with the reason in `error` and the document untouched, if there is no
-    /// pending cut, its preview failed, or its preview is not ready yet.
+    /// clears it. False, with the reason (applyBlocker) in `error` and the document untouched,
+    /// if there is no pending cut, its preview failed, or it is not ready yet.
     bool apply(QString* error = nullptr);
 
     /// True while the worker runs or a request waits for it.

@@ -170,6 +170,13 @@ void RemoveSweepCommand::undo() {
     notify(ScenarioDocument::SweepsPart);
 }
 
+// ---- DropRedoCommand -------------------------------------------------------------------
+
+DropRedoCommand::DropRedoCommand(ScenarioDocument& document)
+    : ScenarioCommand(document, QString()) {
+    setObsolete(true);
+}
+
 // ---- Effects ---------------------------------------------------------------------------
 
 SetEffectEnabledCommand::SetEffectEnabledCommand(ScenarioDocument& document, EffectSpec effect,

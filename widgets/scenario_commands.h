@@ -117,6 +117,16 @@ private:
     int m_index = -1; ///< where the effect is (or was) in the list
 };
 
+/// Changes nothing and is never added: it is obsolete from the start, and QUndoStack::push
+/// deletes such a command after deleting the commands above the current index. Pushed by
+/// ScenarioDocument::revertTo to drop the edits it undid (no redo of them is left).
+class DropRedoCommand : public ScenarioCommand {
+public:
+    explicit DropRedoCommand(ScenarioDocument& document);
+    void redo() override {}
+    void undo() override {}
+};
+
 /// Sets metadata.title; consecutive title edits (typing) merge into one undo step.
 class SetTitleCommand : public ScenarioCommand {
 public:

@@ -84,6 +84,30 @@ QString ScenarioDocument::displayName() const {
 // ---- Files -----------------------------------------------------------------------------
 
 bool ScenarioDocument::newFromSample(const QString& name, QString* error) {
+    Scenario s;
+    if (!sampleScenario(name, s, error))
+        return false;
+    replace(std::move(s));
+    return true;
+}
+
+bool ScenarioDocument::newFromAnatomy(const QString& path, QString* error) {
+    Scenario s;
+    if (!anatomyScenario(path, s, error))
+        return false;
+    replace(std::move(s));
+    return true;
+}
+
+bool ScenarioDocument::open(const QString& path, QString* error) {
+    Scenario loaded;
+    if (!readScenario(path, loaded, error))
+        return false;
+    replace(std::move(loaded), path);
+    return true;
+}
+
+bool ScenarioDocument::sampleScenario(const QString& name, Scenario& out, QString* error) {
     if (!sampleFromName(toStd(name))) {
         setError(error, tr("unknown sample \"%1\" (known: %2)")
                             .arg(name, fromStd([] {
@@ -97,23 +121,11 @@ bool ScenarioDocument::newFromSample(const QString& name, QString* error) {
     TissueSpec tissue;
     tissue.name = toStd(name);
     tissue.surface = "sample:" + toStd(name);
-    startNew(std::move(tissue));
+    out = newScenario(std::move(tissue));
     return true;
 }
 
-void ScenarioDocument::startNew(TissueSpec tissue) {
-    Scenario s;
-    s.metadata.title = toStd(tr("New %1 scenario").arg(fromStd(tissue.name)));
-    s.tissues.push_back(std::move(tissue));
-    s.tool = defaultTool();
-    EffectSpec deformation;
-    deformation.name = "deformation";
-    s.effects.push_back(std::move(deformation));
-    removeOwnAutosave();
-    reset(std::move(s), QString(), false);
-}
-
-bool ScenarioDocument::newFromAnatomy(const QString& path, QString* error) {
+bool ScenarioDocument::anatomyScenario(const QString& path, Scenario& out, QString* error) {
     const QFileInfo info(path);
     if (!info.exists() || !info.isFile()) {
         setError(error, tr("%1: no such file").arg(path));
@@ -124,11 +136,11 @@ bool ScenarioDocument::newFromAnatomy(const QString& path, QString* error) {
     tissue.name = toStd(info.completeBaseName().isEmpty() ? QStringLiteral("tissue") : info.completeBaseName());
     // Absolute until the first save, which rewrites it relative to the scenario's folder.
     (tetMesh ? tissue.mesh : tissue.surface) = toStd(info.absoluteFilePath());
-    startNew(std::move(tissue));
+    out = newScenario(std::move(tissue));
     return true;
 }
 
-bool ScenarioDocument::open(const QString& path, QString* error) {
+bool ScenarioDocument::readScenario(const QString& path, Scenario& out, QString* error) {
     Scenario loaded;
     ScenarioDiagnostics diag;
     const Status status = loadScenario(toStd(path), loaded, diag);
@@ -137,11 +149,30 @@ bool ScenarioDocument::open(const QString& path, QString* error) {
         setError(error, lines.isEmpty() ? fromStd(status.message()) : lines);
         return false;
     }
-    removeOwnAutosave();
-    const QString absolute = QFileInfo(path).absoluteFilePath();
-    reset(std::move(loaded), absolute, false);
-    addRecentFile(absolute);
+    out = std::move(loaded);
     return true;
+}
+
+Scenario ScenarioDocument::newScenario(TissueSpec tissue) {
+    Scenario s;
+    s.metadata.title = toStd(tr("New %1 scenario").arg(fromStd(tissue.name)));
+    s.tissues.push_back(std::move(tissue));
+    s.tool = defaultTool();
+    EffectSpec deformation;
+    deformation.name = "deformation";
+    s.effects.push_back(std::move(deformation));
+    return s;
+}
+
+void ScenarioDocument::replace(Scenario scenario, const QString& filePath) {
+    removeOwnAutosave();
+    if (filePath.isEmpty()) {
+        reset(std::move(scenario), QString(), false);
+        return;
+    }
+    const QString absolute = QFileInfo(filePath).absoluteFilePath();
+    reset(std::move(scenario), absolute, false);
+    addRecentFile(absolute);
 }
 
 bool ScenarioDocument::save(QString* error) {
@@ -156,6 +187,12 @@ bool ScenarioDocument::saveAs(const QString& path, QString* error) {
     if (path.isEmpty()) {
         setError(error, tr("no file name given"));
         return false;
+    }
+    if (m_saveCheck) {
+        if (const QString reason = m_saveCheck(); !reason.isEmpty()) {
+            setError(error, reason);
+            return false;
+        }
     }
     const QFileInfo info(path);
     const QString absolute = info.absoluteFilePath();
@@ -339,6 +376,10 @@ void ScenarioDocument::removeOwnAutosave() {
 // ---- Edits -----------------------------------------------------------------------------
 
 void ScenarioDocument::notify(unsigned parts) {
+    if (m_quiet) {
+        m_quietParts |= parts;
+        return;
+    }
     if (parts & CutSettingsPart)
         emit cutSettingsChanged();
     if (parts & StrokesPart)
@@ -360,12 +401,23 @@ void ScenarioDocument::pushCutSettings(const CutSettings& after, int field) {
 }
 
 void ScenarioDocument::setCutSettings(const CutSettings& settings) {
-    pushCutSettings(settings, static_cast<int>(CutField::All));
+    CutSettings s = settings;
+    // The enhanced triangulation is the hybrid method's (scenario_document.h): a document
+    // with it and subdivision would not load again.
+    if (s.method != CutMethod::Hybrid)
+        s.triangulation = FaceTriangulation::Standard;
+    pushCutSettings(s, static_cast<int>(CutField::All));
 }
 
 void ScenarioDocument::setMethod(CutMethod method) {
     CutSettings s = m_scenario.cut;
+    if (method == s.method)
+        return;
     s.method = method;
+    // As when reading a file: subdivision has the standard triangulation, hybrid the
+    // enhanced one unless the author picks the other.
+    s.triangulation =
+        method == CutMethod::Hybrid ? FaceTriangulation::Enhanced : FaceTriangulation::Standard;
     pushCutSettings(s, static_cast<int>(CutField::Method));
 }
 
@@ -467,6 +519,29 @@ bool ScenarioDocument::setEffectEnabled(const QString& name, bool enabled) {
 
 bool ScenarioDocument::toggleEffect(const QString& name) {
     return setEffectEnabled(name, !isEffectEnabled(name));
+}
+
+bool ScenarioDocument::revertTo(const std::function<bool(const Scenario&)>& good) {
+    const int start = m_undo.index();
+    int found = -1;
+    m_quiet = true;
+    m_quietParts = 0;
+    for (int i = start - 1; i >= 0; --i) {
+        m_undo.setIndex(i);
+        if (good(m_scenario)) {
+            found = i;
+            break;
+        }
+    }
+    if (found < 0)
+        m_undo.setIndex(start); // back to where it was: nothing to announce
+    m_quiet = false;
+    if (found < 0)
+        return false;
+    // An obsolete command is not added, but pushing it deletes the commands above the index.
+    m_undo.push(new DropRedoCommand(*this));
+    notify(m_quietParts);
+    return true;
 }
 
 void ScenarioDocument::setTitle(const QString& title) {

@@ -7,7 +7,13 @@
 //
 // Files:
 //  - open() reads and validates (scenario_load.h); on failure the document is unchanged and
-//    the message lists every error, one per line, each naming the JSON path;
+//    the message lists every error, one per line, each naming the JSON path. open(),
+//    newFromSample() and newFromAnatomy() are a read step (readScenario, sampleScenario,
+//    anatomyScenario: a Scenario, the document untouched) followed by replace(); the studio
+//    runs the two apart, deriving the tissue in between (DocumentOpener), so that a file
+//    whose tissue or cuts fail never replaces the open document;
+//  - save()/saveAs() first ask the save check (setSaveCheck: the studio refuses to save a
+//    state whose tissue and cuts have not derived);
 //  - save()/saveAs() write atomically through saveScenario (a failed save leaves the old
 //    file as it was) and mark the undo stack clean; isModified() is "not at the clean state";
 //  - recent files live in QSettings (key kRecentFilesKey, at most kMaxRecentFiles, most
@@ -21,6 +27,10 @@
 //    close() after its unsaved-changes prompt. At start-up, before loading anything, it asks
 //    recoverableAutosave() and offers recover() or discardAutosave().
 //    There is one autosave per autosave folder: two studios running at once share it.
+//
+// Refused edits: revertTo() undoes the latest edits back to the nearest earlier state a
+// predicate accepts and drops them from the undo stack (TissueSession calls it when a state
+// of the document does not derive: the document never keeps such a state).
 
 #include "scenario/scenario_document.h"
 
@@ -30,6 +40,7 @@
 #include <QTimer>
 #include <QUndoStack>
 
+#include <functional>
 #include <memory>
 
 class QSettings;
@@ -85,8 +96,22 @@ public:
     /// Reads and validates `path`. On failure returns false, the document is unchanged and
     /// *error lists every error (one per line, "FILE: PATH: MESSAGE").
     bool open(const QString& path, QString* error = nullptr);
+
+    /// The read steps of open(), newFromSample() and newFromAnatomy(): the scenario they would
+    /// make (false, with the reason, where they fail). The document is not touched.
+    static bool readScenario(const QString& path, Scenario& out, QString* error = nullptr);
+    static bool sampleScenario(const QString& name, Scenario& out, QString* error = nullptr);
+    static bool anatomyScenario(const QString& path, Scenario& out, QString* error = nullptr);
+    /// Replaces the document (not undoable: the undo stack is cleared) by `scenario`, made by
+    /// one of the read steps above: read from the scenario file `filePath` (made absolute; it
+    /// heads the recent files), or, with an empty path, a new untitled document.
+    void replace(Scenario scenario, const QString& filePath = QString());
     /// Saves to filePath() (an error if there is none). See saveAs().
     bool save(QString* error = nullptr);
+    /// What save() and saveAs() ask before writing: a non-empty answer is the reason not to
+    /// save, and they fail with it (the document, its file and the file on disk unchanged).
+    /// Null: no check.
+    void setSaveCheck(std::function<QString()> check) { m_saveCheck = std::move(check); }
     /// Validates and writes atomically (saveScenario); on success the document's file is
     /// `path`, its relative paths are rebased to the new folder, the undo stack is clean, the
     /// file heads the recent files and this document's autosave is removed. On failure the
@@ -156,6 +181,14 @@ public:
 
     void setTitle(const QString& title);
 
+    // ---- Refused edits -------------------------------------------------------------------
+    /// Undoes the latest edits back to the nearest earlier state on the undo stack for which
+    /// `good` holds, and drops the undone edits (no redo of them is left; if the clean state
+    /// was among them, the document is modified). The intermediate states are not announced:
+    /// the signals fire once, for the parts that differ. False, and nothing changes, if no
+    /// earlier state is good.
+    bool revertTo(const std::function<bool(const Scenario&)>& good);
+
 signals:
     /// Any edit, undo or redo, and a newly loaded document.
     void changed();
@@ -178,8 +211,8 @@ private:
     /// Replaces the whole document (not undoable): clears the undo stack, sets the file.
     void reset(Scenario scenario, const QString& filePath, bool modified);
     void setFilePath(const QString& path);
-    /// A new, unsaved document on `tissue` with the default tool and the deformation effect.
-    void startNew(TissueSpec tissue);
+    /// A new, unsaved scenario on `tissue` with the default tool and the deformation effect.
+    static Scenario newScenario(TissueSpec tissue);
     void removeOwnAutosave();
     void pushCutSettings(const CutSettings& after, int field);
     QSettings& settings() const;
@@ -194,6 +227,9 @@ private:
     bool m_ownsAutosave = false; ///< this document wrote (or recovered) the autosave
     /// Parameters of effects switched off, to restore when switched on again.
     QJsonObject m_offEffectParameters;
+    std::function<QString()> m_saveCheck;
+    bool m_quiet = false;      ///< revertTo() is searching: notify() only collects parts
+    unsigned m_quietParts = 0; ///< the parts changed while quiet
 };
 
 } // namespace resect

@@ -1,6 +1,7 @@
 #include "widgets/tissue_session.h"
 
 #include "scenario/replay.h"
+#include "scenario/scenario_load.h"
 #include "scenario/scenario_run.h"
 #include "scenario/scenario_sweeps.h"
 #include "widgets/scenario_document.h"
@@ -11,6 +12,7 @@
 #include <QJsonDocument>
 #include <QMetaObject>
 
+#include <algorithm>
 #include <exception>
 #include <utility>
 
@@ -57,6 +59,19 @@ Status makeBaseTissue(const Scenario& scenario, TetMesh mesh, TriangleSurface su
     return makeTissue(plan, out);
 }
 
+/// What a state is derived from, comparable with ==: the scenario without its metadata (an
+/// edit of the title changes nothing derived) and with its relative paths resolved from the
+/// root, so that saving to another folder (which rebases them) keeps states comparable.
+Scenario derivationKey(const Scenario& scenario) {
+    Scenario key = scenario;
+    key.metadata = {};
+    rebaseScenarioPaths(key, "/");
+    return key;
+}
+
+/// How many verified states are remembered (enough for any undo history an author keeps).
+constexpr std::size_t kMaxVerifiedStates = 500;
+
 /// Asks `cancel` before every stage of a cut.
 CutStageCallback cancellable(const std::atomic<bool>& cancel) {
     return [&cancel](CutStage) { return !cancel.load(); };
@@ -70,6 +85,9 @@ TissueSession::TissueSession(ScenarioDocument& document, QObject* parent)
     connect(&m_document, &ScenarioDocument::cutSettingsChanged, this, [this] { schedule(false, true); });
     connect(&m_document, &ScenarioDocument::strokesChanged, this, [this] { schedule(false, true); });
     connect(&m_document, &ScenarioDocument::sweepsChanged, this, [this] { schedule(false, true); });
+    // Effects do not change the tissue, but a state with bad effects would not load again.
+    connect(&m_document, &ScenarioDocument::effectsChanged, this,
+            [this] { schedule(false, false); });
     if (!m_document.scenario().tissues.empty())
         onDocumentReset();
 }
@@ -80,23 +98,47 @@ TissueSession::~TissueSession() {
         m_worker.join();
 }
 
+QString TissueSession::saveBlocker() const {
+    if (m_document.scenario().tissues.empty())
+        return tr("There is no tissue to save.");
+    if (m_worker.joinable() || m_startPosted || m_queued)
+        return tr("The tissue is still being derived from the last edit: save once it is shown.");
+    if (!m_error.isEmpty())
+        return tr("The document's tissue or cuts fail: %1").arg(m_error);
+    if (!m_current || !isVerified(m_document.scenario()))
+        return tr("The tissue has not been derived yet.");
+    return {};
+}
+
 void TissueSession::onDocumentReset() {
+    ++m_generation;
+    m_verified.clear();
+    if (m_trialResult &&
+        derivationKey(m_trialResult->scenario) == derivationKey(m_document.scenario())) {
+        Result trial = std::move(*m_trialResult);
+        m_trialResult.reset();
+        adoptTrial(std::move(trial));
+        return;
+    }
+    m_trialResult.reset();
     const QString key = tissueKey(m_document.scenario());
     if (key.isEmpty()) {
-        // A closed document: nothing to show; whatever is running is dropped.
-        m_cancel = true;
-        m_dropRunning = m_worker.joinable();
+        // A closed document: nothing to show; whatever is running for it is dropped.
+        if (m_worker.joinable() && !m_trialRunning)
+            m_cancel = true;
         m_queued.reset();
         m_base.reset();
         m_current.reset();
+        m_currentKey.reset();
         m_baseKey.clear();
         m_loadingKey.clear();
+        m_error.clear();
         emit baseChanged();
         emit currentChanged();
         return;
     }
     const bool reload = key != m_baseKey || !m_base;
-    if (reload && m_worker.joinable() && key != m_loadingKey)
+    if (reload && m_worker.joinable() && !m_trialRunning && key != m_loadingKey)
         m_cancel = true; // the running load is for another tissue
     // The same tissue as loaded: it is reused, but the views still reframe for the new
     // document once its cuts are applied.
@@ -104,9 +146,50 @@ void TissueSession::onDocumentReset() {
     schedule(reload, true);
 }
 
+void TissueSession::adoptTrial(Result trial) {
+    // Whatever runs or waits for the previous document is superseded (the generation moved
+    // on, so a running job's result is dropped); the trial's states are this document's.
+    if (m_worker.joinable() && !m_trialRunning)
+        m_cancel = true;
+    m_queued.reset();
+    m_base = std::move(trial.base);
+    m_baseKey = trial.key;
+    m_loadingKey.clear();
+    m_current = std::move(trial.current);
+    m_currentKey = derivationKey(m_document.scenario());
+    m_error.clear();
+    m_reframe = false;
+    addVerified(m_document.scenario());
+    emit baseChanged();
+    emit currentChanged();
+}
+
 void TissueSession::cancel() {
     m_cancel = true;
     m_queued.reset();
+    if (m_queuedTrial) {
+        // Never started: it ends here.
+        const std::uint64_t id = m_queuedTrial->trial;
+        m_queuedTrial.reset();
+        QMetaObject::invokeMethod(
+            this, [this, id] { emit trialFinished(id, false, tr("Opening was cancelled.")); },
+            Qt::QueuedConnection);
+    }
+}
+
+std::uint64_t TissueSession::trial(const Scenario& scenario) {
+    Request r;
+    r.scenario = scenario;
+    r.trial = ++m_lastTrial;
+    const QString key = tissueKey(scenario);
+    r.reload = key.isEmpty() || key != m_baseKey || !m_base;
+    r.reapply = true;
+    if (m_trialRunning)
+        m_cancel = true; // the running trial is for an older open
+    m_queuedTrial = std::move(r);
+    m_trialResult.reset();
+    postStart();
+    return m_lastTrial;
 }
 
 bool TissueSession::waitForIdle(int ms) {
@@ -122,14 +205,26 @@ bool TissueSession::waitForIdle(int ms) {
 void TissueSession::schedule(bool reload, bool reapply) {
     if (m_document.scenario().tissues.empty())
         return;
+    // The document came back to the state on show (an edit refused, an adopted trial): it
+    // derived, nothing to do.
+    if (!reload && !m_reframe && !m_worker.joinable() && !m_queued && m_current && m_currentKey &&
+        *m_currentKey == derivationKey(m_document.scenario())) {
+        m_error.clear();
+        return;
+    }
     if (!m_queued)
         m_queued = Request{};
     Request& r = *m_queued;
     r.scenario = m_document.scenario();
     r.reload = r.reload || reload;
     r.reapply = r.reapply || reapply || reload;
+    r.generation = m_generation;
     if (r.reload)
         m_loadingKey = tissueKey(r.scenario);
+    postStart();
+}
+
+void TissueSession::postStart() {
     // Started from the event loop, so that the several signals of one document change (a
     // new document announces every part) make one request.
     if (!m_startPosted && !m_worker.joinable()) {
@@ -142,14 +237,23 @@ void TissueSession::schedule(bool reload, bool reapply) {
 }
 
 void TissueSession::startNext() {
-    if (!m_queued || m_worker.joinable())
+    if (m_worker.joinable())
         return;
-    Request request = std::move(*m_queued);
-    m_queued.reset();
-    if (!request.reload && !request.reapply)
+    // A trial first: the author waits for the file to open.
+    std::optional<Request>& next = m_queuedTrial ? m_queuedTrial : m_queued;
+    if (!next)
         return;
+    Request request = std::move(*next);
+    next.reset();
+    std::shared_ptr<const TissueState> base = m_base, current = m_current;
+    if (request.trial != 0) {
+        m_trialRunning = true;
+        if (request.reload)
+            base.reset(), current.reset();
+    }
     m_cancel = false;
-    m_worker = std::thread([this, request = std::move(request), base = m_base, current = m_current]() mutable {
+    m_worker = std::thread([this, request = std::move(request), base = std::move(base),
+                            current = std::move(current)]() mutable {
         Result result;
         try {
             result = compute(request, std::move(base), std::move(current), m_cancel);
@@ -158,6 +262,9 @@ void TissueSession::startNext() {
         } catch (...) {
             result.error = tr("Internal error");
         }
+        result.scenario = std::move(request.scenario);
+        result.generation = request.generation;
+        result.trial = request.trial;
         QMetaObject::invokeMethod(
             this, [this, result = std::move(result)]() mutable { finish(std::move(result)); },
             Qt::QueuedConnection);
@@ -170,8 +277,26 @@ TissueSession::Result TissueSession::compute(const Request& request, std::shared
                                              const std::atomic<bool>& cancel) {
     Result result;
     const Scenario& scenario = request.scenario;
+    if (scenario.tissues.empty()) {
+        result.error = tr("the scenario has no tissue");
+        result.loadFailed = true;
+        return result;
+    }
     const TissueSpec& tissue = scenario.tissues.front();
     const QString name = QString::fromStdString(tissue.name);
+
+    // As loading the saved file would check it (and saving does).
+    {
+        ScenarioDiagnostics diag;
+        if (!validateScenario(scenario, diag).ok()) {
+            result.error = QString::fromStdString(diag.firstError(""));
+            if (result.error.startsWith(QLatin1String(": ")))
+                result.error.remove(0, 2);
+            // Without its tissue loaded, nothing of this document can be shown.
+            result.loadFailed = request.reload || !base;
+            return result;
+        }
+    }
 
     if (request.reload || !base) {
         TetMesh mesh;
@@ -219,6 +344,8 @@ TissueSession::Result TissueSession::compute(const Request& request, std::shared
                     return result;
                 }
                 result.error = tr("%1: %2").arg(QString::fromStdString(cuts[i].label), QString::fromStdString(s.message()));
+                // A tissue loaded for this state is of no use without its cuts.
+                result.loadFailed = result.baseChanged;
                 return result;
             }
         }
@@ -232,50 +359,113 @@ TissueSession::Result TissueSession::compute(const Request& request, std::shared
 void TissueSession::finish(Result result) {
     if (m_worker.joinable())
         m_worker.join();
-    // A newer load replaces whatever this run produced; a newer re-application replaces its
-    // current state.
-    const bool superseded = m_dropRunning || (m_queued && m_queued->reload);
-    m_dropRunning = false;
-    bool emitBase = false, emitCurrent = false, emitFailed = false;
-    if (!superseded) {
-        if (result.baseChanged && result.base) {
-            m_base = result.base;
-            m_baseKey = result.key;
-            emitBase = true;
-        }
-        if (!result.error.isEmpty()) {
-            m_error = result.error;
-            emitFailed = !result.cancelled;
+    if (result.trial != 0) {
+        finishTrial(std::move(result));
+    } else {
+        // A result for an older document, or a newer load, replaces whatever this run produced; a
+        // newer re-application replaces its current state.
+        const bool superseded = result.generation != m_generation || (m_queued && m_queued->reload);
+        bool emitBase = false, emitCurrent = false, emitFailed = false, emitRefused = false;
+        if (superseded) {
+            if (!result.cancelled && result.error.isEmpty() && result.generation == m_generation)
+                addVerified(result.scenario); // a fact about that state, even if not shown
+        } else if (result.cancelled) {
+            // Not a failure of the state (it is derived again when the document asks); but a
+            // load cancelled for this document leaves nothing of the previous one on show.
             if (result.loadFailed) {
-                // The document's tissue could not be loaded: nothing of the old one stays.
                 m_base.reset();
                 m_current.reset();
+                m_currentKey.reset();
                 m_baseKey.clear();
-                m_queued.reset();
+                m_error = result.error;
                 emitBase = emitCurrent = true;
             }
         } else {
-            m_error.clear();
-        }
-        if (result.currentChanged && result.current && !(m_queued && m_queued->reapply)) {
-            m_current = result.current;
-            emitCurrent = true;
-            if (m_reframe) {
+            if (result.baseChanged && result.base) {
+                m_base = result.base;
+                m_baseKey = result.key;
                 emitBase = true;
-                m_reframe = false;
+            }
+            if (!result.error.isEmpty()) {
+                m_error = result.error;
+                if (result.loadFailed) {
+                    // The document's tissue could not be loaded: nothing of the old one stays.
+                    m_base.reset();
+                    m_current.reset();
+                    m_currentKey.reset();
+                    m_baseKey.clear();
+                    m_queued.reset();
+                    emitBase = emitCurrent = emitFailed = true;
+                } else {
+                    // Reverting re-schedules the restored state, which clears the error.
+                    emitRefused = refuse(result.scenario);
+                    emitFailed = !emitRefused;
+                }
+            } else {
+                m_error.clear();
+                addVerified(result.scenario);
+                // Validated only (an effect edit): the tissue on show is this state's.
+                if (!result.currentChanged && m_current)
+                    m_currentKey = derivationKey(result.scenario);
+            }
+            if (result.currentChanged && result.current && !(m_queued && m_queued->reapply)) {
+                m_current = result.current;
+                m_currentKey = derivationKey(result.scenario);
+                emitCurrent = true;
+                if (m_reframe) {
+                    emitBase = true;
+                    m_reframe = false;
+                }
             }
         }
+        const QString message = result.error;
+        if (emitBase)
+            emit baseChanged();
+        if (emitCurrent)
+            emit currentChanged();
+        if (emitRefused)
+            emit editRefused(message);
+        if (emitFailed)
+            emit failed(m_error);
     }
-    if (emitBase)
-        emit baseChanged();
-    if (emitCurrent)
-        emit currentChanged();
-    if (emitFailed)
-        emit failed(m_error);
-    if (m_queued)
+    if (m_queued || m_queuedTrial)
         startNext();
     if (!isBusy())
         emit busyChanged(false);
+}
+
+void TissueSession::finishTrial(Result result) {
+    m_trialRunning = false;
+    if (result.trial != m_lastTrial)
+        return; // a newer trial replaced it
+    if (result.cancelled || !result.error.isEmpty()) {
+        emit trialFinished(result.trial, false,
+                           result.cancelled ? tr("Opening was cancelled.") : result.error);
+        return;
+    }
+    const std::uint64_t id = result.trial;
+    m_trialResult = std::move(result);
+    emit trialFinished(id, true, QString());
+}
+
+bool TissueSession::refuse(const Scenario& failed) {
+    if (!(derivationKey(failed) == derivationKey(m_document.scenario())))
+        return false; // the document moved on: its newer state is derived next
+    return m_document.revertTo([this](const Scenario& s) { return isVerified(s); });
+}
+
+void TissueSession::addVerified(const Scenario& scenario) {
+    Scenario key = derivationKey(scenario);
+    if (!m_verified.empty() && m_verified.back() == key)
+        return;
+    m_verified.push_back(std::move(key));
+    if (m_verified.size() > kMaxVerifiedStates)
+        m_verified.erase(m_verified.begin());
+}
+
+bool TissueSession::isVerified(const Scenario& scenario) const {
+    const Scenario key = derivationKey(scenario);
+    return std::find(m_verified.rbegin(), m_verified.rend(), key) != m_verified.rend();
 }
 
 } // namespace resect

@@ -20,6 +20,21 @@
 // settings) every cut is re-applied on a copy of base (a few milliseconds for the samples).
 // Requests made while the worker is busy are merged and run next; a newer load cancels an
 // older one. Results of superseded requests are dropped.
+//
+// Every state of the document is derived as replay would derive it, so the document never
+// keeps one that does not: a state is first validated as loading it would be
+// (validateScenario: also what saving checks, so a derived state can be saved and read back),
+// then its cuts are applied; effect edits are validated too. When a state of the document
+// fails, the edits that led to it are undone back to the nearest earlier state that derived
+// (ScenarioDocument::revertTo; they are dropped from the undo stack) and editRefused() says
+// why; only a state with no such earlier state (a document opened directly, not through a
+// trial) stays failed and is reported by failed(). A state that derived is "verified"; the
+// comparison ignores the metadata and where relative paths are resolved from.
+//
+// Trials: trial() derives a scenario that is not the document yet (a file being opened) on
+// the same worker, without touching the document or the published states; the studio
+// replaces the document only once its trial succeeded (DocumentOpener), and the trial's
+// states are then published at once instead of being derived again.
 
 #include "scenario/scenario_document.h"
 #include "widgets/tissue_state.h"
@@ -28,9 +43,11 @@
 #include <QString>
 
 #include <atomic>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <thread>
+#include <vector>
 
 namespace resect {
 
@@ -44,16 +61,32 @@ public:
     /// Cancels the worker and waits for it.
     ~TissueSession() override;
 
-    /// True while the worker runs or a request waits for it.
-    bool isBusy() const { return m_worker.joinable() || m_startPosted || m_queued.has_value(); }
-    /// The last load or cut failure (empty after a success).
+    /// True while the worker runs or a request (or trial) waits for it.
+    bool isBusy() const {
+        return m_worker.joinable() || m_startPosted || m_queued.has_value() ||
+               m_queuedTrial.has_value();
+    }
+    /// The last load, validation or cut failure of the document's state (empty after a
+    /// success).
     const QString& error() const { return m_error; }
+    /// Why the document's state cannot be saved now (ScenarioDocument::setSaveCheck): still
+    /// being derived, failed, or never derived (a derivation was cancelled); empty when this
+    /// very state derived.
+    QString saveBlocker() const;
 
     std::shared_ptr<const TissueState> base() const { return m_base; }
     std::shared_ptr<const TissueState> current() const { return m_current; }
 
-    /// Cancels a running load (meshing stops; the previous tissue stays).
+    /// Cancels a running load or trial (meshing stops; the previous tissue stays).
     void cancel();
+
+    /// Derives `scenario` (a document about to be opened) as the document's state would be,
+    /// without touching the document or the published states; trialFinished(id, ...) reports
+    /// on this thread. A newer trial replaces an older one (whose result is dropped unreported);
+    /// cancel() ends it with a failure. Returns the trial's id (never 0).
+    std::uint64_t trial(const Scenario& scenario);
+    /// True while a trial runs or waits.
+    bool isTrialRunning() const { return m_trialRunning || m_queuedTrial.has_value(); }
 
     /// Runs the event loop until the worker is idle and no request is queued, or `ms` passed
     /// (for tests and the command line's --screenshot). True if idle.
@@ -67,27 +100,48 @@ signals:
     /// A new current state was published (after any change of the document's cuts or cut
     /// settings, and after base changes).
     void currentChanged();
-    /// Loading or applying the document's cuts failed; `message` names what and why.
+    /// Loading or applying the document's cuts failed and no earlier state could be
+    /// restored; `message` names what and why.
     void failed(const QString& message);
+    /// The document's last edits made a state that does not derive: they were undone (and
+    /// dropped) back to the last state that did; `reason` names the edit's problem.
+    void editRefused(const QString& reason);
+    /// A trial ended: ok (its states are published when the document is replaced by its
+    /// scenario), or why not (also "cancelled").
+    void trialFinished(std::uint64_t id, bool ok, const QString& message);
 
 private:
     struct Request {
         Scenario scenario;
         bool reload = false;
         bool reapply = false;
+        std::uint64_t generation = 0; ///< the document's (see m_generation)
+        std::uint64_t trial = 0;      ///< a trial's id; 0: the document's state
     };
     struct Result {
+        Scenario scenario; ///< what was derived
         std::shared_ptr<const TissueState> base, current;
         bool baseChanged = false, currentChanged = false;
         bool loadFailed = false, cancelled = false;
         QString key; ///< tissueKey of a newly loaded base
         QString error;
+        std::uint64_t generation = 0;
+        std::uint64_t trial = 0;
     };
 
     void onDocumentReset();
+    /// Publishes a successful trial's states for the document that now holds its scenario.
+    void adoptTrial(Result trial);
     void schedule(bool reload, bool reapply);
+    void postStart();
     void startNext();
     void finish(Result result);
+    void finishTrial(Result result);
+    /// After a failure of the document's state: reverts the document to its last verified
+    /// state if it still holds the failed one; true if it did.
+    bool refuse(const Scenario& failed);
+    void addVerified(const Scenario& scenario);
+    bool isVerified(const Scenario& scenario) const;
     static Result compute(const Request& request, std::shared_ptr<const TissueState> base,
                           std::shared_ptr<const TissueState> current, const std::atomic<bool>& cancel);
 
@@ -97,9 +151,18 @@ private:
     QString m_loadingKey;  ///< what the running or queued load loads
     QString m_error;
 
-    std::optional<Request> m_queued;
+    std::optional<Request> m_queued;      ///< the document's next state to derive
+    std::optional<Request> m_queuedTrial; ///< the next trial
+    std::optional<Result> m_trialResult;  ///< a successful trial, until the document takes it
+    std::uint64_t m_lastTrial = 0;        ///< id of the latest trial
+    bool m_trialRunning = false;
+    /// Counts document replacements; a result of an older document is dropped.
+    std::uint64_t m_generation = 1;
+    /// States of this document that derived (derivationKey), the latest last.
+    std::vector<Scenario> m_verified;
+    /// The derivationKey of the state m_current shows (empty when there is none).
+    std::optional<Scenario> m_currentKey;
     bool m_startPosted = false; ///< a start of the queued request is posted
-    bool m_dropRunning = false; ///< the running job's result belongs to a closed document
     bool m_reframe = false;     ///< a new document reuses the base: say baseChanged once cut
     std::atomic<bool> m_cancel{false};
     std::thread m_worker;

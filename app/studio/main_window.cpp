@@ -4,6 +4,7 @@
 #include "widgets/authoring_panel.h"
 #include "widgets/cut_panel.h"
 #include "widgets/cut_preview.h"
+#include "widgets/document_opener.h"
 #include "widgets/export_runner.h"
 #include "widgets/language.h"
 #include "widgets/quality_panel.h"
@@ -13,6 +14,7 @@
 #include "widgets/simulation_panel.h"
 #include "widgets/surface_pick.h"
 #include "widgets/sweep_edit_tool.h"
+#include "widgets/tet_inspector.h"
 #include "widgets/tissue_session.h"
 #include "widgets/vtk_viewport.h"
 
@@ -60,6 +62,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setObjectName(QStringLiteral("mainWindow"));
     m_document = new ScenarioDocument(this);
     m_session = new TissueSession(*m_document, this);
+    m_opener = new DocumentOpener(*m_document, *m_session, this);
     m_preview = new CutPreview(*m_document, *m_session, this);
     m_simulation = new SimulationController(*m_document, *m_session, this);
 
@@ -81,7 +84,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     m_statusLabel = new QLabel(this);
     m_statusLabel->setObjectName(QStringLiteral("statusSummary"));
-    statusBar()->addPermanentWidget(m_statusLabel, 1);
+    // A normal (not permanent) widget: a temporary message (a refused edit, a save) takes its
+    // place while it is shown; a permanent one that stretches left the messages no room.
+    statusBar()->addWidget(m_statusLabel, 1);
 
     connect(m_document, &ScenarioDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ScenarioDocument::fileChanged, this, &MainWindow::updateTitle);
@@ -91,17 +96,28 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_session, &TissueSession::busyChanged, this, &MainWindow::onBusyChanged);
     connect(m_session, &TissueSession::baseChanged, this, &MainWindow::updateStatus);
     connect(m_session, &TissueSession::currentChanged, this, &MainWindow::updateStatus);
-    connect(m_document, &ScenarioDocument::documentReset, m_shown, &ShownTissue::frameNext);
+    // Every new document is framed when the session publishes its tissue (baseChanged).
+    connect(m_document, &ScenarioDocument::documentReset, this, &MainWindow::resetViews);
     connect(m_shown, &ShownTissue::framed, this, [this] {
-        m_loadedOnce = true;
         updateStatus();
         emit meshLoaded();
     });
+    // What fails to open is reported by the opener; a document's tissue fails here only when
+    // it was loaded directly (a recovered autosave). Refused edits and failing cuts are shown
+    // in place (the status bar and the cut panel's notice), never in a dialog.
+    connect(m_opener, &DocumentOpener::failed, this, &MainWindow::onOpenFailed);
     connect(m_session, &TissueSession::failed, this, [this](const QString& message) {
-        if (!m_loadedOnce || !m_session->base())
+        if (!m_session->base()) {
             emit loadFailed(message);
-        showError(tr("The tissue could not be loaded or cut."), message);
+            showError(tr("The tissue could not be loaded."), message);
+            return;
+        }
+        statusBar()->showMessage(tr("The tissue or its cuts fail: %1").arg(message), 30000);
     });
+    connect(m_session, &TissueSession::editRefused, this, [this](const QString& reason) {
+        statusBar()->showMessage(tr("The last edit was undone: %1").arg(reason), 20000);
+    });
+    m_document->setSaveCheck([this] { return m_session->saveBlocker(); });
     connect(m_simulation, &SimulationController::failed, this, [this](const QString& message) {
         statusBar()->showMessage(message, 10000);
     });
@@ -130,7 +146,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             [this] { m_accuracyPanel->setBaseCutSettings(m_document->scenario().cut); });
     connect(m_accuracyPanel, &AccuracyPanel::adoptRequested, m_document, &ScenarioDocument::setCutSettings);
     connect(m_cutPanel, &CutPanel::applyFailed, this,
-            [this](const QString& message) { showError(tr("The cut was not applied."), message); });
+            [this](const QString& message) { statusBar()->showMessage(message, 10000); });
+    connect(m_preview, &CutPreview::changed, this, &MainWindow::updateApplyAction);
+    connect(m_session, &TissueSession::busyChanged, this, &MainWindow::updateApplyAction);
+    updateApplyAction();
 
     m_export = new ExportRunner(this);
     connect(m_export, &ExportRunner::finished, this, &MainWindow::onExportFinished);
@@ -182,12 +201,13 @@ void MainWindow::createActions() {
     edit->addAction(redo);
 
     QMenu* cut = menuBar()->addMenu(tr("&Cut"));
-    QAction* apply = cut->addAction(tr("&Apply pending cut"), this, [this] {
+    m_applyAction = cut->addAction(tr("&Apply pending cut"), this, [this] {
         QString error;
         if (!m_preview->apply(&error))
-            showError(tr("The cut was not applied."), error);
+            statusBar()->showMessage(error, 10000);
     });
-    apply->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Return));
+    m_applyAction->setObjectName(QStringLiteral("applyPendingCut"));
+    m_applyAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Return));
     cut->addAction(tr("&Discard pending cut"), m_preview, &CutPreview::discard);
 
     QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
@@ -299,7 +319,8 @@ void MainWindow::newFromSample(const QString& name) {
     if (!maybeSave())
         return;
     QString error;
-    if (!m_document->newFromSample(name, &error))
+    m_opening = name;
+    if (!m_opener->openSample(name, &error))
         showError(tr("Could not create the scenario."), error);
 }
 
@@ -309,11 +330,28 @@ void MainWindow::openFile(const QString& path) {
     if (!maybeSave())
         return;
     QString error;
-    const bool ok = isScenarioFile(path) ? m_document->open(path, &error) : m_document->newFromAnatomy(path, &error);
-    if (!ok) {
-        emit loadFailed(error);
-        showError(tr("Could not open %1.").arg(QFileInfo(path).fileName()), error);
-    }
+    m_opening = QFileInfo(path).fileName();
+    const bool ok = isScenarioFile(path) ? m_opener->openScenario(path, &error)
+                                         : m_opener->openAnatomy(path, &error);
+    if (!ok)
+        onOpenFailed(error);
+}
+
+void MainWindow::onOpenFailed(const QString& message) {
+    emit loadFailed(message);
+    showError(tr("Could not open %1.").arg(m_opening), message);
+}
+
+void MainWindow::resetViews() {
+    // What was drawn, recorded, picked, studied or said about the previous document.
+    m_authoringPanel->reset();
+    m_accuracyPanel->clearResults();
+    m_qualityPanel->inspector()->clear();
+    statusBar()->clearMessage();
+}
+
+void MainWindow::updateApplyAction() {
+    m_applyAction->setEnabled(m_preview->canApply());
 }
 
 bool MainWindow::save() {
@@ -364,8 +402,9 @@ void MainWindow::importAnatomyDialog() {
     if (path.isEmpty() || !maybeSave())
         return;
     QString error;
-    if (!m_document->newFromAnatomy(path, &error))
-        showError(tr("Could not import %1.").arg(QFileInfo(path).fileName()), error);
+    m_opening = QFileInfo(path).fileName();
+    if (!m_opener->openAnatomy(path, &error))
+        onOpenFailed(error);
 }
 
 bool MainWindow::exportPackage(const QString& outDir, bool force) {

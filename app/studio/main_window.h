@@ -1,7 +1,8 @@
 #pragma once
 // MainWindow: the studio's main window. It only assembles and routes: the document model
 // (ScenarioDocument, the single source of truth with its undo stack), the tissue derived
-// from it on a worker thread (TissueSession), the pending cut and its preview (CutPreview),
+// from it on a worker thread (TissueSession), opening only what derives (DocumentOpener),
+// the pending cut and its preview (CutPreview),
 // the simulation (SimulationController), what the views show of them (ShownTissue), the
 // 3-D view and the panels, which all observe the document; menus and tool bars call the
 // document's edits.
@@ -26,6 +27,7 @@ class AccuracyPanel;
 class AuthoringPanel;
 class CutPanel;
 class CutPreview;
+class DocumentOpener;
 class ExportRunner;
 class QualityPanel;
 class ScenarioDocument;
@@ -46,7 +48,9 @@ public:
     void openSample(Sample sample);
     /// A scenario (.json) is opened; a tet mesh (.vtu, .msh, .node, .ele) or any surface
     /// assimp reads starts a new scenario on that anatomy (a surface is meshed in the
-    /// background). Asks about unsaved changes first.
+    /// background). Asks about unsaved changes first. The document is replaced only once the
+    /// new tissue and its cuts derived (DocumentOpener); a failure (loadFailed) leaves the
+    /// open document and the views as they were.
     void openFile(const QString& path);
     /// Saves to the document's file, or asks for one. False if not saved.
     bool save();
@@ -62,6 +66,7 @@ public:
     bool isLoading() const;
     VtkViewport* viewport() const { return m_viewport; }
     ScenarioDocument& document() { return *m_document; }
+    DocumentOpener& opener() { return *m_opener; }
     TissueSession& session() { return *m_session; }
     CutPreview& cutPreview() { return *m_preview; }
     SimulationController& simulation() { return *m_simulation; }
@@ -106,6 +111,10 @@ private:
     void exportDialog();
     void onExportFinished(bool ok, const QString& message, const QStringList& files);
     void newFromSample(const QString& name);
+    void onOpenFailed(const QString& message);
+    /// A new document is shown: the views drop what belonged to the previous one.
+    void resetViews();
+    void updateApplyAction();
     void showError(const QString& title, const QString& message);
     void updateTitle();
     void updateRecentMenu();
@@ -116,6 +125,7 @@ private:
 
     ScenarioDocument* m_document = nullptr;
     TissueSession* m_session = nullptr;
+    DocumentOpener* m_opener = nullptr;
     CutPreview* m_preview = nullptr;
     SimulationController* m_simulation = nullptr;
     ShownTissue* m_shown = nullptr;
@@ -133,10 +143,11 @@ private:
     QMenu* m_viewMenu = nullptr;
     QAction* m_showTets = nullptr;
     QAction* m_showSurface = nullptr;
+    QAction* m_applyAction = nullptr;
+    QString m_opening; ///< the name of what is being opened (for messages)
 
     bool m_errorDialogs = true;
     QMessageBox::StandardButton m_unsavedAnswer = QMessageBox::NoButton;
-    bool m_loadedOnce = false;
 };
 
 } // namespace resect

@@ -183,6 +183,7 @@ private slots:
     void absurdSizesAreCapped();
     void damagedDocumentsNeverCrash();
     void missingReferencedFiles();
+    void aTissueMayBeItsTetMeshAlone();
     void migratesVersion0();
     void version0StructuralErrors();
     void saveIsAtomic();
@@ -539,6 +540,38 @@ void TestScenarioDocument::malformedJson() {
     QVERIFY(!st.ok());
     QVERIFY2(QString::fromStdString(st.message()).contains(text), st.message().c_str());
     QVERIFY(QString::fromStdString(st.message()).startsWith("doc.json"));
+}
+
+// The studio imports a tet mesh as a tissue without an embedded surface: such a document is
+// valid, written without "surface" and read back equal; without "mesh" the surface is
+// still required.
+void TestScenarioDocument::aTissueMayBeItsTetMeshAlone() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    {
+        QFile mesh(dir.filePath("m.vtu"));
+        QVERIFY(mesh.open(QIODevice::WriteOnly)); // only its existence is checked here
+    }
+    const QByteArray json = R"({"format": "resect-scenario", "version": 1,
+        "tissues": [{"name": "m", "mesh": "m.vtu"}]})";
+    Scenario s;
+    ScenarioDiagnostics d;
+    QVERIFY2(parseScenario(json, dir.path().toStdString(), "mesh-only.json", s, d).ok(),
+             qPrintable(issuesText(d)));
+    QCOMPARE(s.tissues.front().surface, std::string());
+    const QJsonObject written = scenarioToJson(s);
+    QVERIFY(!written["tissues"].toArray()[0].toObject().contains("surface"));
+    Scenario again;
+    QVERIFY2(parseScenario(QJsonDocument(written).toJson(), dir.path().toStdString(), "again.json",
+                           again, d)
+                 .ok(),
+             qPrintable(issuesText(d)));
+    QVERIFY(again == s);
+
+    const QByteArray neither = R"({"format": "resect-scenario", "version": 1,
+        "tissues": [{"name": "m"}]})";
+    QVERIFY(!parseScenario(neither, "", "neither.json", s, d).ok());
+    QVERIFY2(d.find("tissues[0].surface"), qPrintable(issuesText(d)));
 }
 
 void TestScenarioDocument::absurdSizesAreCapped() {

@@ -572,6 +572,137 @@ private slots:
         QVERIFY(doc->save(&error));
         QVERIFY(readAll(target) != old);
     }
+
+    // revertTo (TissueSession refuses an edit whose state does not derive): back to the
+    // nearest earlier good state, the undone edits dropped, one announcement of what changed.
+    void revertToUndoesAndDropsTheEdits() {
+        auto doc = makeDocument();
+        QVERIFY(doc->newFromSample("polyp"));
+        doc->setD(0.3);
+        doc->setTitle("kept?");
+        doc->addStroke(sampleStroke("bad", 0));
+        doc->setSnap(false);
+        QCOMPARE(doc->undoStack()->count(), 4);
+        QSignalSpy strokes(doc.get(), &ScenarioDocument::strokesChanged);
+        QSignalSpy settings(doc.get(), &ScenarioDocument::cutSettingsChanged);
+        QSignalSpy metadata(doc.get(), &ScenarioDocument::metadataChanged);
+        QSignalSpy changed(doc.get(), &ScenarioDocument::changed);
+        // Good: no stroke. The nearest such state is the one after the title edit.
+        const auto good = [](const Scenario& s) { return s.strokes.empty(); };
+        QVERIFY(doc->revertTo(good));
+        QVERIFY(doc->scenario().strokes.empty());
+        QCOMPARE(doc->scenario().cut.d, 0.3);
+        QCOMPARE(doc->scenario().cut.snap, true);
+        QCOMPARE(doc->scenario().metadata.title, std::string("kept?"));
+        // The refused edits are gone: nothing to redo, two steps left to undo.
+        QVERIFY(!doc->undoStack()->canRedo());
+        QCOMPARE(doc->undoStack()->count(), 2);
+        QCOMPARE(doc->undoStack()->index(), 2);
+        // Announced once, for the parts that changed (strokes and cut settings), not the
+        // metadata the search passed through.
+        QCOMPARE(strokes.count(), 1);
+        QCOMPARE(settings.count(), 1);
+        QCOMPARE(metadata.count(), 0);
+        QCOMPARE(changed.count(), 1);
+        // Undo still works below.
+        doc->undoStack()->undo();
+        doc->undoStack()->undo();
+        QCOMPARE(doc->scenario().cut.d, 0.2);
+    }
+
+    void revertToWithoutAGoodStateChangesNothing() {
+        auto doc = makeDocument();
+        QVERIFY(doc->newFromSample("polyp"));
+        doc->addStroke(sampleStroke("bad", 0));
+        doc->setD(0.3);
+        const Scenario before = doc->scenario();
+        QSignalSpy changed(doc.get(), &ScenarioDocument::changed);
+        QVERIFY(!doc->revertTo([](const Scenario& s) { return s.cut.d == 0.45; }));
+        QVERIFY(doc->scenario() == before);
+        QCOMPARE(doc->undoStack()->index(), 2);
+        QCOMPARE(doc->undoStack()->count(), 2);
+        QCOMPARE(changed.count(), 0);
+        QVERIFY(doc->isModified());
+    }
+
+    void revertingPastTheSavedStateMakesTheDocumentModified() {
+        auto doc = makeDocument();
+        QVERIFY(doc->newFromSample("polyp"));
+        doc->setD(0.3);
+        QVERIFY(doc->saveAs(path("saved.json")));
+        QVERIFY(!doc->isModified());
+        doc->setSnap(false);
+        // Back to the saved state: clean again.
+        QVERIFY(doc->revertTo([](const Scenario& s) { return s.cut.snap; }));
+        QVERIFY(!doc->isModified());
+        // Back beyond it: the saved state is dropped, the document is modified.
+        doc->setSnap(false);
+        QVERIFY(doc->revertTo([](const Scenario& s) { return s.cut.d == 0.2; }));
+        QVERIFY(doc->isModified());
+        QVERIFY(!doc->undoStack()->canRedo());
+    }
+
+    void theSaveCheckCanRefuseASave() {
+        auto doc = makeDocument();
+        QVERIFY(doc->newFromSample("polyp"));
+        QString reason = QStringLiteral("still deriving");
+        doc->setSaveCheck([&reason] { return reason; });
+        QString error;
+        QVERIFY(!doc->saveAs(path("refused.json"), &error));
+        QCOMPARE(error, reason);
+        QVERIFY(!QFileInfo::exists(path("refused.json")));
+        QVERIFY(doc->filePath().isEmpty());
+        reason.clear();
+        QVERIFY2(doc->saveAs(path("accepted.json"), &error), qPrintable(error));
+        QVERIFY(QFileInfo::exists(path("accepted.json")));
+    }
+
+    // The enhanced triangulation belongs to the hybrid method: the document never holds it
+    // with subdivision, which would not load again.
+    void subdivisionTakesTheStandardTriangulation() {
+        auto doc = makeDocument();
+        QVERIFY(doc->newFromSample("polyp"));
+        QCOMPARE(doc->scenario().cut.triangulation, FaceTriangulation::Enhanced);
+        doc->setMethod(CutMethod::Subdivision);
+        QCOMPARE(doc->scenario().cut.triangulation, FaceTriangulation::Standard);
+        ScenarioDiagnostics diag;
+        QVERIFY(validateScenario(doc->scenario(), diag).ok());
+        doc->setMethod(CutMethod::Hybrid);
+        QCOMPARE(doc->scenario().cut.triangulation, FaceTriangulation::Enhanced);
+        CutSettings s = doc->scenario().cut;
+        s.method = CutMethod::Subdivision; // with the enhanced triangulation, as Adopt gives it
+        doc->setCutSettings(s);
+        QCOMPARE(doc->scenario().cut.method, CutMethod::Subdivision);
+        QCOMPARE(doc->scenario().cut.triangulation, FaceTriangulation::Standard);
+        QVERIFY(validateScenario(doc->scenario(), diag).ok());
+    }
+
+    void readStepsLeaveTheDocumentAlone() {
+        auto doc = makeDocument();
+        QVERIFY(doc->newFromSample("polyp"));
+        doc->setD(0.3);
+        QVERIFY(doc->saveAs(path("a.json")));
+        doc->setSnap(false);
+        const Scenario before = doc->scenario();
+        Scenario read;
+        QString error;
+        QVERIFY(ScenarioDocument::readScenario(path("a.json"), read, &error));
+        QCOMPARE(read.cut.d, 0.3);
+        QVERIFY(ScenarioDocument::sampleScenario("myoma", read, &error));
+        QCOMPARE(read.tissues.front().surface, std::string("sample:myoma"));
+        QVERIFY(!ScenarioDocument::sampleScenario("liver", read, &error));
+        QVERIFY(error.contains("liver"));
+        QVERIFY(!ScenarioDocument::anatomyScenario(path("none.stl"), read, &error));
+        QVERIFY(doc->scenario() == before);
+        QCOMPARE(doc->undoStack()->count(), 2);
+        // replace() is the second step.
+        QVERIFY(ScenarioDocument::readScenario(path("a.json"), read, &error));
+        doc->replace(read, path("a.json"));
+        QCOMPARE(doc->filePath(), QFileInfo(path("a.json")).absoluteFilePath());
+        QVERIFY(!doc->isModified());
+        QCOMPARE(doc->undoStack()->count(), 0);
+        QCOMPARE(doc->recentFiles().first(), QFileInfo(path("a.json")).absoluteFilePath());
+    }
 };
 
 QTEST_MAIN(TestScenarioDocument)

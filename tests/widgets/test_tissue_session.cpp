@@ -15,7 +15,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cstdint>
 #include <cstring>
+#include <functional>
 #include <span>
 
 using namespace resect;
@@ -42,6 +44,20 @@ Status cutDirectly(const Scenario& scenario, Tissue& out) {
             return Status::error(stroke.name + ": " + s.message());
     out.updateSurface();
     return Status::success();
+}
+
+/// A stroke whose tool never moves: two poses at the same place. Its sweep has fewer than
+/// two distinct curves, which the scenario layer refuses.
+Stroke stillStroke() {
+    Stroke s;
+    s.name = "held still";
+    for (int i = 0; i < 2; ++i) {
+        ToolPose p;
+        p.t = 0.1 * i;
+        p.position = Vec3(0, 0, 5);
+        s.poses.push_back(p);
+    }
+    return s;
 }
 
 } // namespace
@@ -257,6 +273,147 @@ private slots:
         QVERIFY(session.waitForIdle(kWaitMs));
         QCOMPARE(session.base(), first); // not meshed again
         QCOMPARE(base.count(), 1);       // but the views reframe
+    }
+
+    // The document never keeps a state that does not derive: each failing edit (a stroke
+    // the tool cannot sweep, a sweep file that is not there, a setting out of range, an
+    // effect the tissue cannot have) is undone and dropped, and editRefused says why.
+    void failingEditsAreUndoneAndSayWhy() {
+        ScenarioDocument doc;
+        doc.setAutosaveDirectory(m_dir.path());
+        TissueSession session(doc);
+        QVERIFY(doc.newFromSample(QStringLiteral("polyp")));
+        QVERIFY(session.waitForIdle(kWaitMs));
+        doc.addSweep(planeSweep(session.base()->mesh(), 0.6, 1e-3));
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QVERIFY(session.error().isEmpty());
+        const auto cut = session.current();
+        QCOMPARE(cut->cuts(), 1);
+        const Scenario good = doc.scenario();
+
+        SweepSpec missing;
+        missing.name = "missing";
+        missing.file = m_dir.filePath(QStringLiteral("no-such-sweep.json")).toStdString();
+        struct Case {
+            const char* name;
+            std::function<void()> edit;
+            const char* mentions;
+        };
+        const std::vector<Case> cases{
+            {"still stroke", [&] { doc.addStroke(stillStroke()); }, "strokes[0]"},
+            {"missing sweep file", [&] { doc.addSweep(missing); }, "no-such-sweep.json"},
+            {"rings out of range", [&] { doc.setRings(CutLimits::kMaxRelaxRings + 1); }, "rings"},
+            {"fixed without regions", [&] { doc.setEffectEnabled(QStringLiteral("fixed"), true); },
+             "fixed"},
+        };
+        for (const Case& c : cases) {
+            QSignalSpy refused(&session, &TissueSession::editRefused);
+            QSignalSpy failed(&session, &TissueSession::failed);
+            c.edit();
+            QVERIFY2(!(doc.scenario() == good), c.name);
+            QVERIFY2(session.waitForIdle(kWaitMs), c.name);
+            QVERIFY2(refused.count() == 1, c.name);
+            const QString reason = refused.first().first().toString();
+            QVERIFY2(reason.contains(QLatin1String(c.mentions)), qPrintable(reason));
+            QCOMPARE(failed.count(), 0);
+            QVERIFY2(doc.scenario() == good, c.name);
+            QCOMPARE(doc.undoStack()->count(), 1); // the sweep; the refused edit is gone
+            QVERIFY(!doc.undoStack()->canRedo());
+            QVERIFY2(session.error().isEmpty(), qPrintable(session.error()));
+            QCOMPARE(session.current()->cuts(), 1);
+            QCOMPARE(tissueDifference(session.current()->tissue, cut->tissue), QString());
+            QVERIFY(session.saveBlocker().isEmpty());
+        }
+    }
+
+    // A failing edit made while an earlier one is still being derived: both end up undone
+    // back to the last state that derived.
+    void editsMadeInARowAreUndoneToTheLastGoodState() {
+        ScenarioDocument doc;
+        doc.setAutosaveDirectory(m_dir.path());
+        TissueSession session(doc);
+        QVERIFY(doc.newFromSample(QStringLiteral("polyp")));
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QSignalSpy refused(&session, &TissueSession::editRefused);
+        doc.setD(0.3);
+        doc.addStroke(stillStroke());
+        doc.setSnap(false);
+        QVERIFY(!session.saveBlocker().isEmpty()); // not derived yet
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QCOMPARE(refused.count(), 1);
+        QVERIFY(doc.scenario().strokes.empty());
+        QCOMPARE(doc.scenario().cut.d, 0.2); // 0.3 alone was never derived
+        QVERIFY(doc.scenario().cut.snap);
+        QCOMPARE(doc.undoStack()->count(), 0);
+        QVERIFY(session.error().isEmpty());
+        QVERIFY(session.saveBlocker().isEmpty());
+
+        // A state whose derivation was cancelled is not saved either, until it derives.
+        doc.setD(0.3);
+        session.cancel();
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QVERIFY(!session.saveBlocker().isEmpty());
+        doc.setD(0.25);
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QVERIFY2(session.saveBlocker().isEmpty(), qPrintable(session.saveBlocker()));
+    }
+
+    // A trial derives a scenario that is not the document's; the document takes its states
+    // when it is replaced by it, without deriving them again. A failed trial changes nothing.
+    void trialsDeriveWithoutTouchingTheDocument() {
+        ScenarioDocument doc;
+        doc.setAutosaveDirectory(m_dir.path());
+        TissueSession session(doc);
+        QVERIFY(doc.newFromSample(QStringLiteral("polyp")));
+        QVERIFY(session.waitForIdle(kWaitMs));
+        const auto base = session.base();
+        const auto current = session.current();
+        const Scenario before = doc.scenario();
+
+        Scenario other;
+        QVERIFY(ScenarioDocument::sampleScenario(QStringLiteral("myoma"), other));
+        other.sweeps.push_back(planeSweep(current->mesh(), 0.5, 1e-3)); // where the polyp is
+        QSignalSpy finished(&session, &TissueSession::trialFinished);
+        QSignalSpy changed(&session, &TissueSession::currentChanged);
+        const std::uint64_t id = session.trial(other);
+        QVERIFY(session.isBusy());
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QCOMPARE(finished.count(), 1);
+        QCOMPARE(finished.first().at(0).value<std::uint64_t>(), id);
+        QVERIFY2(finished.first().at(1).toBool(), qPrintable(finished.first().at(2).toString()));
+        QCOMPARE(changed.count(), 0);
+        QVERIFY(doc.scenario() == before);
+        QCOMPARE(session.base(), base);
+        QCOMPARE(session.current(), current);
+
+        doc.replace(other);
+        QVERIFY(!session.isBusy()); // published, not derived again
+        QCOMPARE(session.current()->tissueName, QStringLiteral("myoma"));
+        QCOMPARE(session.current()->cuts(), 1);
+        QVERIFY(session.saveBlocker().isEmpty());
+        Tissue direct;
+        QVERIFY(cutDirectly(other, direct).ok());
+        QCOMPARE(tissueDifference(session.current()->tissue, direct), QString());
+
+        // A trial whose tissue cannot be loaded: nothing changes.
+        const QString path = m_dir.filePath(QStringLiteral("open-trial.obj"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        f.close();
+        Scenario broken;
+        QVERIFY(ScenarioDocument::anatomyScenario(path, broken));
+        const auto shown = session.current();
+        const Scenario now = doc.scenario();
+        finished.clear();
+        session.trial(broken);
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QCOMPARE(finished.count(), 1);
+        QVERIFY(!finished.first().at(1).toBool());
+        QVERIFY(finished.first().at(2).toString().contains(QStringLiteral("open-trial")));
+        QVERIFY(doc.scenario() == now);
+        QCOMPARE(session.current(), shown);
+        QVERIFY(session.error().isEmpty());
     }
 };
 

@@ -4,31 +4,45 @@
 
 #include "main_window.h"
 
+#include "scenario/accuracy_study.h"
+#include "widgets/accuracy_chart.h"
 #include "widgets/accuracy_panel.h"
 #include "widgets/authoring_panel.h"
-#include "widgets/language.h"
-#include "widgets/quality_panel.h"
-#include "scenario/accuracy_study.h"
+#include "widgets/camera_ray.h"
 #include "widgets/cut_panel.h"
 #include "widgets/cut_preview.h"
-#include "widgets/stroke_recorder.h"
+#include "widgets/language.h"
+#include "widgets/quality_panel.h"
+#include "widgets/quality_summary_table.h"
 #include "widgets/scenario_document.h"
+#include "widgets/shown_tissue.h"
 #include "widgets/simulation_controller.h"
 #include "widgets/simulation_panel.h"
-#include "widgets/shown_tissue.h"
+#include "widgets/stroke_recorder.h"
+#include "widgets/tet_inspector.h"
 #include "widgets/tissue_session.h"
 #include "widgets/vtk_viewport.h"
 
+#include "tests/widgets/sweep_fixtures.h"
+#include "tests/widgets/tissue_compare.h"
 #include <QAction>
-#include <vtkCamera.h>
 #include <QCheckBox>
 #include <QComboBox>
-#include <QMenuBar>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QMenuBar>
 #include <QPushButton>
 #include <QSettings>
-#include "tests/widgets/sweep_fixtures.h"
+#include <vtkCamera.h>
+
+#include "scenario/scenario_load.h"
+#include "scenario/scenario_run.h"
+#include "scenario/scenario_save.h"
+
+#include <QStatusBar>
+
+#include <functional>
+#include <random>
 
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -37,6 +51,7 @@
 
 using namespace resect;
 using resect::test::planeSweep;
+using resect::test::tissueDifference;
 
 namespace {
 
@@ -60,7 +75,163 @@ struct Studio {
     bool idle() { return window.cutPreview().waitForIdle(kWaitMs); }
     int tets() { return window.session().current()->mesh().tetCount(); }
     QAction* action(const char* name) { return window.findChild<QAction*>(QString::fromLatin1(name)); }
+    /// Opens `path` and waits for it to be shown (true) or to fail.
+    bool open(const QString& path) {
+        QSignalSpy loaded(&window, &MainWindow::meshLoaded);
+        QSignalSpy failed(&window, &MainWindow::loadFailed);
+        window.openFile(path);
+        if (failed.count() == 0 && loaded.count() == 0)
+            QTest::qWaitFor([&] { return loaded.count() + failed.count() > 0; }, kWaitMs);
+        return loaded.count() == 1 && failed.count() == 0 && idle();
+    }
 };
+
+/// Independently of the studio: whether `scenario` replays, i.e. it is valid as loading would
+/// find it, and its tissue, made as replay makes it (scenario_run.h planTissue, makeTissue),
+/// takes every cut in replay order. The cut tissue goes to `out` if given.
+Status replays(const Scenario& scenario, Tissue* out = nullptr) {
+    ScenarioDiagnostics diag;
+    if (Status s = validateScenario(scenario, diag); !s.ok())
+        return s;
+    ReplayPlan plan;
+    if (Status s = planTissue(scenario, scenario.tissues.front(), plan); !s.ok())
+        return s;
+    Tissue local;
+    Tissue& tissue = out ? *out : local;
+    if (Status s = makeTissue(plan, tissue); !s.ok())
+        return s;
+    for (const ReplayStroke& stroke : plan.strokes)
+        if (Status s = tissue.cut(stroke.sweep, plan.cut); !s.ok())
+            return Status::error(stroke.name + ": " + s.message());
+    tissue.updateSurface();
+    return Status::success();
+}
+
+/// A stroke whose tool never moves (two poses at one place): the scenario layer refuses it.
+Stroke stillStroke() {
+    Stroke s;
+    s.name = "held still";
+    for (int i = 0; i < 2; ++i) {
+        ToolPose p;
+        p.t = 0.1 * i;
+        p.position = Vec3(0, 0, 5);
+        s.poses.push_back(p);
+    }
+    return s;
+}
+
+/// A stroke pulled as the studio's Pull motion pulls it (pullPoses): the loop opening
+/// upwards (+z), its tip `depth` of the loop's half width below the tissue's top, `lateral`
+/// mm beside its centre, pulled horizontally along `heading` (radians about z).
+Stroke pulledStroke(const ToolSpec& tool, const TetMesh& mesh, double heading, double depth,
+                    double lateral) {
+    Vec3 centre = Vec3::Zero();
+    double top = -1e300;
+    for (const Vec3& p : mesh.referencePositions()) {
+        centre += p;
+        top = std::max(top, p.z());
+    }
+    centre /= double(mesh.nodeCount());
+    const Vec3 along(std::cos(heading), std::sin(heading), 0), across(-along.y(), along.x(), 0);
+    const Vec3 tip(centre.x(), centre.y(), top - depth * 0.5 * loopWidth(tool));
+    Ray ray;
+    ray.direction = along;
+    ray.origin = tip + lateral * across - 100 * along;
+    Stroke s;
+    s.name = "pulled";
+    s.poses = pullPoses(tool, ray, Vec3::UnitZ(), mesh.referencePositions(),
+                        StrokeRecorder::kPullMarginFraction * loopWidth(tool),
+                        StrokeRecorder::kPullSpeed);
+    return s;
+}
+
+/// Random edits as an author makes them, some failing on purpose. After each, once the
+/// studio is idle: the document holds the edit if and only if its state replays (replays(),
+/// independently), else it is back where it was with nothing to redo and a refusal said;
+/// the session's error is empty and its current state has every cut of the document.
+/// `failures` counts the edits refused.
+void randomEdits(Studio& s, unsigned seed, int steps, int& failures) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    ScenarioDocument& doc = s.window.document();
+    TissueSession& session = s.window.session();
+    QSignalSpy refused(&session, &TissueSession::editRefused);
+    const TetMesh base = session.base()->mesh();
+    for (int step = 0; step < steps; ++step) {
+        const int kind = std::uniform_int_distribution<int>(0, 7)(random);
+        const Scenario before = doc.scenario();
+        const int refusalsBefore = refused.count();
+        bool mustFail = false;
+        QString name;
+        switch (kind) {
+        case 0:
+            name = QStringLiteral("add sweep");
+            doc.addSweep(planeSweep(base, 0.3 + 0.55 * unit(random), 0.3 * (unit(random) - 0.5)));
+            break;
+        case 1:
+            name = QStringLiteral("add pulled stroke");
+            doc.addStroke(pulledStroke(doc.scenario().tool, base, 2 * M_PI * unit(random),
+                                       0.3 + 0.5 * unit(random), 4 * (unit(random) - 0.5)));
+            break;
+        case 2:
+            name = QStringLiteral("add still stroke");
+            doc.addStroke(stillStroke());
+            mustFail = true;
+            break;
+        case 3: {
+            name = QStringLiteral("add missing sweep file");
+            SweepSpec missing;
+            missing.file = "/nonexistent/sweep.json";
+            doc.addSweep(missing);
+            mustFail = true;
+            break;
+        }
+        case 4: {
+            static const double kDs[] = {0.05, 0.1, 0.2, 0.3, 0.45};
+            name = QStringLiteral("set d");
+            doc.setD(kDs[std::uniform_int_distribution<int>(0, 4)(random)]);
+            break;
+        }
+        case 5:
+            name = QStringLiteral("set rings out of range");
+            doc.setRings(CutLimits::kMaxRelaxRings + 1);
+            mustFail = true;
+            break;
+        case 6:
+            name = QStringLiteral("undo");
+            s.action("undo")->trigger();
+            break;
+        default:
+            name = QStringLiteral("redo");
+            s.action("redo")->trigger();
+            break;
+        }
+        const QString what = QStringLiteral("seed %1 step %2: %3").arg(seed).arg(step).arg(name);
+        const Scenario candidate = doc.scenario();
+        const Status judged = candidate == before ? Status::success() : replays(candidate);
+        if (mustFail)
+            QVERIFY2(!judged.ok(), qPrintable(what));
+        QVERIFY2(s.idle(), qPrintable(what));
+        QVERIFY2(session.error().isEmpty(),
+                 qPrintable(what + QStringLiteral(": ") + session.error()));
+        if (judged.ok()) {
+            QVERIFY2(doc.scenario() == candidate, qPrintable(what));
+            QCOMPARE(refused.count(), refusalsBefore);
+        } else {
+            ++failures;
+            QVERIFY2(
+                doc.scenario() == before,
+                qPrintable(what + QStringLiteral(": ") + QString::fromStdString(judged.message())));
+            QVERIFY2(!doc.undoStack()->canRedo(), qPrintable(what));
+            QCOMPARE(refused.count(), refusalsBefore + 1);
+        }
+        const auto current = session.current();
+        QVERIFY(current);
+        QCOMPARE(current->cuts(),
+                 int(doc.scenario().strokes.size() + doc.scenario().sweeps.size()));
+        QVERIFY(session.saveBlocker().isEmpty());
+    }
+}
 
 } // namespace
 
@@ -448,6 +619,351 @@ private slots:
         QCOMPARE(s.window.document().scenario().cut.d, 0.3);
         s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
         QVERIFY(s.window.close());
+    }
+
+    // Issue 15: a preview that fails cannot be applied; Apply is disabled and the reason is
+    // shown in the cut panel, with no dialog. Nor while the preview is still computing.
+    void aFailingPreviewCannotBeApplied_data() {
+        QTest::addColumn<bool>("stroke");
+        QTest::newRow("a stroke held still") << true;
+        QTest::newRow("a sweep file that is not there") << false;
+    }
+    void aFailingPreviewCannotBeApplied() {
+        QFETCH(bool, stroke);
+        Studio s;
+        s.window.setErrorDialogsEnabled(true); // a dialog would be a failure here
+        QVERIFY(s.load());
+        CutPanel* panel = s.window.cutPanel();
+        auto* apply = panel->findChild<QPushButton*>(QStringLiteral("applyCut"));
+        auto* status = panel->findChild<QLabel*>(QStringLiteral("previewStatus"));
+        QAction* menuApply = s.action("applyPendingCut");
+        QVERIFY(apply && status && menuApply);
+        const int tets = s.tets();
+
+        // A good cut: not applicable while it is computed, then applicable.
+        s.window.cutPreview().setPendingSweep(planeSweep(s.window.session().base()->mesh(), 0.6));
+        QVERIFY(!apply->isEnabled());
+        QVERIFY(!menuApply->isEnabled());
+        QVERIFY(s.idle());
+        QVERIFY(apply->isEnabled());
+        QVERIFY(menuApply->isEnabled());
+
+        QSignalSpy errors(&s.window, &MainWindow::errorReported);
+        if (stroke) {
+            s.window.cutPreview().setPendingStroke(stillStroke());
+        } else {
+            SweepSpec missing;
+            missing.file = m_dir.filePath(QStringLiteral("missing-sweep.json")).toStdString();
+            s.window.cutPreview().setPendingSweep(missing);
+        }
+        QVERIFY(s.idle());
+        const QString reason = s.window.cutPreview().error();
+        QVERIFY(!reason.isEmpty());
+        QVERIFY(!apply->isEnabled());
+        QVERIFY(!menuApply->isEnabled());
+        QVERIFY2(status->text().contains(reason), qPrintable(status->text()));
+        QVERIFY(status->isVisibleTo(panel));
+        // Clicking, the shortcut's action or the call itself apply nothing.
+        QTest::mouseClick(apply, Qt::LeftButton);
+        menuApply->trigger();
+        QString error;
+        QVERIFY(!s.window.cutPreview().apply(&error));
+        QVERIFY(error.contains(reason));
+        QVERIFY(s.idle());
+        QCOMPARE(s.window.document().undoStack()->count(), 0);
+        QCOMPARE(s.tets(), tets);
+        QCOMPARE(errors.count(), 0);
+        QVERIFY(s.window.findChildren<QMessageBox*>().isEmpty());
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    // Issue 15: no sequence of edits produces a document whose state does not derive.
+    void randomEditsNeverLeaveAFailingDocument_data() {
+        QTest::addColumn<unsigned>("seed");
+        for (unsigned seed : {11u, 12u, 13u})
+            QTest::addRow("seed %u", seed) << seed;
+    }
+    void randomEditsNeverLeaveAFailingDocument() {
+        QFETCH(unsigned, seed);
+        Studio s;
+        QVERIFY(s.load());
+        int failures = 0;
+        randomEdits(s, seed, 16, failures);
+        if (QTest::currentTestFailed())
+            return;
+        QVERIFY(failures >= 1); // the sequence did try failing edits
+        // The state on show is the one replay makes, bit for bit.
+        Tissue direct;
+        QVERIFY(replays(s.window.document().scenario(), &direct).ok());
+        QCOMPARE(tissueDifference(s.window.session().current()->tissue, direct), QString());
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    // Issue 15: a saved scenario reopens in a fresh studio with the same tissue and replays
+    // through `resect run`'s runScenario.
+    void saveReopenReplayRoundTrips_data() {
+        QTest::addColumn<unsigned>("seed");
+        for (unsigned seed : {21u, 22u})
+            QTest::addRow("seed %u", seed) << seed;
+    }
+    void saveReopenReplayRoundTrips() {
+        QFETCH(unsigned, seed);
+        const QString path = m_dir.filePath(QStringLiteral("round-trip-%1.json").arg(seed));
+        Studio s;
+        QVERIFY(s.load());
+        int failures = 0;
+        randomEdits(s, seed, 12, failures);
+        if (QTest::currentTestFailed())
+            return;
+        QVERIFY(s.window.saveAs(path));
+        const Scenario saved = s.window.document().scenario();
+        const auto shown = s.window.session().current();
+
+        Studio fresh;
+        QVERIFY(fresh.open(path));
+        QVERIFY(fresh.window.document().scenario() == saved);
+        QCOMPARE(tissueDifference(fresh.window.session().current()->tissue, shown->tissue),
+                 QString());
+
+        Scenario loaded;
+        ScenarioDiagnostics diag;
+        QVERIFY(loadScenario(path.toStdString(), loaded, diag).ok());
+        ScenarioRun run;
+        const Status replayed = runScenario(loaded, run);
+        QVERIFY2(replayed.ok(), replayed.message().c_str());
+        QCOMPARE(run.tissues.size(), std::size_t(1));
+        QCOMPARE(run.tissues.front().outcome.mesh.tetCount(), shown->mesh().tetCount());
+        QCOMPARE(run.tissues.front().outcome.pieces, shown->pieces);
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    // Issue 15: opening something that fails (to read, to load its tissue) leaves the open
+    // document, its undo stack, its title and the tissue on show exactly as they were.
+    void aFailedOpenLeavesEverythingUnchanged_data() {
+        QTest::addColumn<QString>("kind");
+        QTest::newRow("corrupt scenario") << "corrupt";
+        QTest::newRow("scenario on a broken tet mesh") << "broken mesh";
+        QTest::newRow("scenario on an open surface") << "open surface";
+        QTest::newRow("broken tet mesh") << "mesh file";
+    }
+    void aFailedOpenLeavesEverythingUnchanged() {
+        QFETCH(QString, kind);
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        Studio s;
+        QVERIFY(s.load());
+        // An open document with a file, edits, undo history and a cut on show.
+        QVERIFY(s.window.saveAs(dir.filePath(QStringLiteral("previous.json"))));
+        s.window.document().addSweep(planeSweep(s.window.session().base()->mesh(), 0.6));
+        s.window.document().setD(0.3);
+        QVERIFY(s.idle());
+        QCOMPARE(s.window.session().current()->cuts(), 1);
+
+        const auto write = [&](const QString& name, const QByteArray& bytes) {
+            QFile f(dir.filePath(name));
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(bytes);
+        };
+        QString path;
+        if (kind == QLatin1String("corrupt")) {
+            path = dir.filePath(QStringLiteral("corrupt.json"));
+            write(QStringLiteral("corrupt.json"), "{\"format\": \"resect-scenario\", \"vers");
+        } else if (kind == QLatin1String("mesh file")) {
+            path = dir.filePath(QStringLiteral("garbage.vtu"));
+            write(QStringLiteral("garbage.vtu"),
+                  "<VTKFile type=\"UnstructuredGrid\"> this is not a mesh");
+        } else {
+            Scenario bad = s.window.document().scenario();
+            TissueSpec& tissue = bad.tissues.front();
+            tissue.surface.clear();
+            if (kind == QLatin1String("broken mesh")) {
+                write(QStringLiteral("garbage.vtu"),
+                      "<VTKFile type=\"UnstructuredGrid\"> this is not a mesh");
+                tissue.mesh = dir.filePath(QStringLiteral("garbage.vtu")).toStdString();
+            } else {
+                write(QStringLiteral("open.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+                tissue.surface = dir.filePath(QStringLiteral("open.obj")).toStdString();
+            }
+            path = dir.filePath(QStringLiteral("bad.json"));
+            const Status saved = saveScenario(path.toStdString(), bad);
+            QVERIFY2(saved.ok(), saved.message().c_str());
+        }
+
+        const QString title = s.window.windowTitle();
+        const Scenario scenario = s.window.document().scenario();
+        const QString file = s.window.document().filePath();
+        const int undoCount = s.window.document().undoStack()->count();
+        const int undoIndex = s.window.document().undoStack()->index();
+        const auto current = s.window.session().current();
+        const TetMesh* shown = s.window.shownTissue().mesh();
+        const int actorTets = s.window.viewport()->tetMeshActor().tetCount();
+        QSignalSpy errors(&s.window, &MainWindow::errorReported);
+        QSignalSpy loaded(&s.window, &MainWindow::meshLoaded);
+
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard); // go ahead without saving
+        QVERIFY(!s.open(path));
+        QVERIFY(s.idle());
+        QCOMPARE(errors.count(), 1);
+        const QString message = errors.first().first().toString();
+        QVERIFY2(message.contains(QFileInfo(path).fileName()) ||
+                     message.contains(QStringLiteral("garbage.vtu")) ||
+                     message.contains(QStringLiteral("open.obj")),
+                 qPrintable(message));
+        QCOMPARE(loaded.count(), 0);
+        QCOMPARE(s.window.windowTitle(), title);
+        QVERIFY(s.window.document().scenario() == scenario);
+        QCOMPARE(s.window.document().filePath(), file);
+        QVERIFY(s.window.document().isModified());
+        QCOMPARE(s.window.document().undoStack()->count(), undoCount);
+        QCOMPARE(s.window.document().undoStack()->index(), undoIndex);
+        QCOMPARE(s.window.session().current(), current);
+        QVERIFY(s.window.session().error().isEmpty());
+        QCOMPARE(s.window.shownTissue().mesh(), shown);
+        QCOMPARE(s.window.viewport()->tetMeshActor().tetCount(), actorTets);
+        // The document goes on as before: undo still undoes its own edits.
+        s.action("undo")->trigger();
+        QCOMPARE(s.window.document().scenario().cut.d, 0.2);
+    }
+
+    // Issue 15: a successful open resets every view: the pending cut, what was drawn or
+    // recorded, the picked tet, the study and its chart, the quality comparison, messages.
+    void aSuccessfulOpenResetsEveryView() {
+        const QString target = m_dir.filePath(QStringLiteral("reset-target.json"));
+        Studio s;
+        QVERIFY(s.load());
+        s.window.document().addSweep(planeSweep(s.window.session().base()->mesh(), 0.5));
+        QVERIFY(s.idle());
+        QVERIFY(s.window.saveAs(target));
+        const int targetTets = s.tets();
+        const int baseTets = s.window.session().base()->mesh().tetCount();
+
+        // The study on this tissue.
+        AccuracyPanel* accuracy = s.window.accuracyPanel();
+        StudyConfig config = tinyConfig();
+        config.dValues = {0.2};
+        config.repeats = 1;
+        accuracy->setCustomConfig(config);
+        QSignalSpy studied(accuracy, &AccuracyPanel::studyFinished);
+        accuracy->run();
+        QVERIFY(studied.wait(kWaitMs));
+        QVERIFY(!accuracy->rows().empty());
+        accuracy->selectRow(0);
+        // A refused edit's notice, a picked tet, a message.
+        s.window.document().setRings(CutLimits::kMaxRelaxRings + 1);
+        QVERIFY(s.idle());
+        QVERIFY(!s.window.cutPanel()->notice().isEmpty());
+        s.window.qualityPanel()->inspectTet(s.window.session().current()->mesh(), 3, Scheme::None);
+        QCOMPARE(s.window.qualityPanel()->inspector()->tet(), 3);
+        // A recorded stroke, pending, previewed.
+        AuthoringPanel* authoring = s.window.authoringPanel();
+        double now = 0;
+        authoring->strokeRecorder().setClock([&now] { return now; });
+        authoring->findChild<QPushButton*>(QStringLiteral("recordStrokeButton"))->click();
+        VtkViewport* view = s.window.viewport();
+        const int y = view->height() / 2;
+        QTest::mousePress(view, Qt::LeftButton, {}, QPoint(view->width() / 5, y));
+        for (int i = 1; i <= 6; ++i) {
+            now += 0.05;
+            QTest::mouseMove(view, QPoint(view->width() / 5 + i * view->width() / 10, y));
+        }
+        QTest::mouseRelease(view, Qt::LeftButton, {},
+                            QPoint(view->width() / 5 + 6 * view->width() / 10, y));
+        QVERIFY(s.idle());
+        QVERIFY(s.window.cutPreview().preview());
+        QVERIFY(!authoring->lastStroke().poses.empty());
+        authoring->findChild<QPushButton*>(QStringLiteral("drawSweepButton"))->click();
+        s.window.statusBar()->showMessage(QStringLiteral("an old message"));
+        QCOMPARE(s.window.qualityPanel()->summaryTable()->value(QualitySummaryTable::Tets,
+                                                                QualitySummaryTable::After),
+                 QString::number(s.window.cutPreview().preview()->mesh().tetCount()));
+
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+        QVERIFY(s.open(target));
+        QVERIFY(!s.window.cutPreview().hasPending());
+        QVERIFY(!s.window.cutPreview().preview());
+        QCOMPARE(s.window.shownTissue().source(), ShownTissue::Source::Current);
+        QVERIFY(authoring->lastStroke().poses.empty());
+        QVERIFY(authoring->strokeRecorder().poses().empty());
+        QVERIFY(!authoring->strokeRecorder().toolActor().isVisible());
+        QVERIFY(
+            !authoring->findChild<QPushButton*>(QStringLiteral("drawSweepButton"))->isChecked());
+        QVERIFY(
+            !authoring->findChild<QPushButton*>(QStringLiteral("playStrokeButton"))->isEnabled());
+        QVERIFY(accuracy->rows().empty());
+        QVERIFY(accuracy->chart()->rows().empty());
+        QCOMPARE(accuracy->selectedRow(), -1);
+        QCOMPARE(s.window.qualityPanel()->inspector()->tet(), -1);
+        QVERIFY(s.window.cutPanel()->notice().isEmpty());
+        QCOMPARE(s.window.statusBar()->currentMessage(), QString());
+        QCOMPARE(s.window.qualityPanel()->summaryTable()->value(QualitySummaryTable::Tets,
+                                                                QualitySummaryTable::Before),
+                 QString::number(baseTets));
+        QCOMPARE(s.window.qualityPanel()->summaryTable()->value(QualitySummaryTable::Tets,
+                                                                QualitySummaryTable::After),
+                 QString::number(targetTets));
+        QCOMPARE(s.tets(), targetTets);
+    }
+
+    // Issue 15, the paper's loop motion: "Pull loop", one click near the top of the polyp's
+    // head, pulls the loop from behind the tissue towards the camera and takes off a chip.
+    void aPulledLoopTakesOffAChip() {
+        Studio s;
+        QVERIFY(s.load());
+        QCOMPARE(s.window.session().current()->pieces, 1);
+        AuthoringPanel* authoring = s.window.authoringPanel();
+        auto* pull = authoring->findChild<QPushButton*>(QStringLiteral("pullLoopButton"));
+        QVERIFY(pull);
+        pull->click();
+        QVERIFY(authoring->strokeRecorder().isRecording());
+        QCOMPARE(authoring->strokeRecorder().motion(), StrokeRecorder::Motion::Pull);
+
+        // Where to click: on the head's centre line, 40 % of the loop's depth (half its
+        // width) below the top of the tissue as seen.
+        VtkViewport* view = s.window.viewport();
+        vtkCamera* camera = view->camera();
+        double upArray[3];
+        camera->GetViewUp(upArray);
+        const Vec3 up(upArray[0], upArray[1], upArray[2]);
+        const TetMesh& mesh = s.window.session().current()->mesh();
+        Vec3 centre = Vec3::Zero();
+        double top = -1e300;
+        for (const Vec3& p : mesh.positions()) {
+            centre += p;
+            top = std::max(top, p.dot(up));
+        }
+        centre /= double(mesh.nodeCount());
+        const double depth = 0.4 * 0.5 * loopWidth(s.window.document().scenario().tool);
+        const Vec3 tip = centre + (top - depth - centre.dot(up)) * up;
+        const auto pixel = worldToPixel(camera, view->size(), tip);
+        QVERIFY(pixel.has_value());
+        QTest::mousePress(view, Qt::LeftButton, {}, pixel->toPoint());
+        QTest::mouseRelease(view, Qt::LeftButton, {}, pixel->toPoint());
+        QVERIFY(!authoring->strokeRecorder().isRecording());
+        QCOMPARE(authoring->lastStroke().poses.size(), std::size_t(2));
+        // The loop goes from behind the tissue to in front of it, towards the camera, along
+        // the ray through the click.
+        const Vec3 toward = pixelRay(camera, view->size(), pixel->toPoint()).direction;
+        const Vec3 start = authoring->lastStroke().poses.front().position;
+        const Vec3 end = authoring->lastStroke().poses.back().position;
+        QVERIFY((end - start).dot(toward) < 0);
+        for (const Vec3& p : mesh.positions()) {
+            QVERIFY((start - p).dot(toward) > 0);
+            QVERIFY((end - p).dot(toward) < 0);
+        }
+
+        QVERIFY(s.window.cutPreview().hasPending());
+        QVERIFY(s.idle());
+        QVERIFY2(s.window.cutPreview().error().isEmpty(),
+                 qPrintable(s.window.cutPreview().error()));
+        QCOMPARE(s.window.cutPreview().preview()->pieces, 2);
+        auto* apply = s.window.cutPanel()->findChild<QPushButton*>(QStringLiteral("applyCut"));
+        QVERIFY(apply->isEnabled());
+        QTest::mouseClick(apply, Qt::LeftButton);
+        QVERIFY(s.idle());
+        QCOMPARE(int(s.window.document().scenario().strokes.size()), 1);
+        QCOMPARE(s.window.session().current()->pieces, 2); // a chip came off
+        QVERIFY(s.window.session().error().isEmpty());
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
     }
 };
 
