@@ -70,7 +70,7 @@ void TissueState::settle() {
     const TetMesh& m = tissue.mesh();
     quality = summarizeQuality(m);
     stableDt = tissue.empty() ? 0 : stableTimeStep(m, tissue.material()).dt;
-    pieces = tissue.empty() ? 0 : tissue.pieces().count;
+    pieces = tissue.empty() ? 0 : tissue.pieces().count + static_cast<int>(tissue.chips().size());
 }
 
 } // namespace resect

@@ -49,7 +49,7 @@ struct TissueState {
     AppliedCuts applied; ///< what was cut into `tissue` since the base
     QualitySummary quality;
     double stableDt = 0;         ///< s, stableTimeStep of the mass-spring model
-    int pieces = 0;              ///< connected components
+    int pieces = 0;              ///< pieces cut: the tissue's connected components and its resected chips
     CutStats cutStats;           ///< summed over the cuts since base (a preview: the pending cut)
     double surfaceCutMs = 0;     ///< embedded-surface update, cut and re-binding, summed likewise
     int surfaceCapTriangles = 0; ///< cap triangles those cuts added to the surface
