@@ -17,6 +17,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QProcess>
+#include <QThread>
 #include <QStandardPaths>
 
 #include <chrono>
@@ -46,8 +47,8 @@ StudyProgress printer(const char* study) {
     };
 }
 
-/// Runs resect-plot; empty on success, else why the plots are missing.
-std::string drawPlots(const QString& dir) {
+/// Runs resect-plot once; empty on success, else why the plots are missing.
+std::string drawPlotsOnce(const QString& dir) {
     const QString plotter = QCoreApplication::applicationDirPath() + "/resect-plot";
     if (!QFileInfo(plotter).isExecutable())
         return "the plotter " + plotter.toStdString() + " is not built";
@@ -76,6 +77,23 @@ std::string drawPlots(const QString& dir) {
     if (p.exitCode() != 0)
         return "resect-plot failed (exit code " + std::to_string(p.exitCode()) + ", see its message above)";
     return {};
+}
+
+/// Runs resect-plot, up to kPlotAttempts times: a fresh Xvfb started by xvfb-run -a now and then
+/// loses its display to another one started at the same moment (two draw at once on a shared
+/// machine), and the plotter then cannot connect; a second Xvfb gets another display.
+std::string drawPlots(const QString& dir) {
+    constexpr int kPlotAttempts = 3;
+    std::string why;
+    for (int attempt = 0; attempt < kPlotAttempts; ++attempt) {
+        why = drawPlotsOnce(dir);
+        if (why.empty())
+            return why;
+        std::fprintf(stderr, "resect bench: drawing the plots failed (%s)%s\n", why.c_str(),
+                     attempt + 1 < kPlotAttempts ? "; trying again" : "");
+        QThread::msleep(200);
+    }
+    return why;
 }
 
 } // namespace
