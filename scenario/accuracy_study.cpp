@@ -218,6 +218,9 @@ Status measureVariant(const StudyConfig& config, const StudyMesh& meshInfo, cons
     options.d = v.d;
     options.snap = v.snap;
     options.relaxSteps = v.relax;
+    // The variants are the paper's settings: what each costs and gives in one cut, without the
+    // mesh improvement the defaults add after it (step 7 of Tissue::cut; see bench resection).
+    options.improve = false;
     options.density = config.material.density;
 
     row = StudyRow{};

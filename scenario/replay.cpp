@@ -125,8 +125,9 @@ public:
             return Status::error(stroke.name + ": " + s.message());
         m_out.cutTotals += cut.tets;
         m_out.surfaceCapTriangles += cut.surface.surface.capTriangles;
-        if (cut.resectedPieces > 0) {
-            // The tissue rebuilt its simulation on what remains: the effects are new objects.
+        if (cut.simulationRebuilt) {
+            // The tissue rebuilt its simulation (tets were resected or removed by the
+            // improvement step): the effects are new objects.
             m_sim = m_tissue.simulator();
             m_tool = dynamic_cast<ToolContactEffect*>(m_sim->findEffect("tool-contact"));
         }

@@ -1,7 +1,12 @@
 // resect cut MESH --sweep S.json [--sweep S2.json ...] --out OUT.vtu [--report R.json]
 //            [--method hybrid|subdivision] [--triangulation enhanced|standard] [--d 0.2]
 //            [--snap | --no-snap] [--relax-steps N] [--w-spring W] [--w-particle W]
-//            [--surface HI_RES --surface-out OUT.obj]
+//            [--surface HI_RES --surface-out OUT.obj] [--improve on|off]
+//            [--improve-quality Q] [--improve-short-edge S]
+//            [--fix-box x0 y0 z0 x1 y1 z1 [--resected remove|keep] [--resected-out CHIPS.vtu]]
+// With --fix-box, the pieces a cut leaves without a node in the box are resected: removed from
+// the output mesh by default (--resected-out writes them, at their positions, to one file),
+// or kept in it (keep). Their count, volume and mass are reported.
 #include "app/cli/cli_common.h"
 
 #include "core/mesh/masses.h"
@@ -52,6 +57,32 @@ int runCut(Args args) {
     options.relaxSteps = args.integer("--relax-steps", 0, CutLimits::kMaxRelaxSteps).value_or(hybrid ? 10 : 0);
     options.wSpring = args.number("--w-spring", 0.0, CutLimits::kMaxRelaxWeight).value_or(options.wSpring);
     options.wParticle = args.number("--w-particle", 0.0, CutLimits::kMaxRelaxWeight).value_or(options.wParticle);
+    // Step 7 of the cut: local mesh improvement (on by default, for every method).
+    const std::string improve = args.option("--improve").value_or("on");
+    if (improve != "on" && improve != "off")
+        badInput("--improve: expected on or off, got '" + improve + "'");
+    options.improve = improve == "on";
+    options.improveQuality =
+        args.number("--improve-quality", 0.0, CutLimits::kMaxImproveQuality).value_or(options.improveQuality);
+    options.improveShortEdge =
+        args.number("--improve-short-edge", 0.0, CutLimits::kMaxImproveShortEdge).value_or(options.improveShortEdge);
+    const auto box = args.numbers("--fix-box", 6, "x0 y0 z0 x1 y1 z1");
+    const auto resectedText = args.option("--resected");
+    const auto chipsOut = args.option("--resected-out");
+    ResectedPieces resected = ResectedPieces::Remove;
+    if (resectedText && (!parseResectedPieces(*resectedText, resected) || resected == ResectedPieces::Rigid))
+        badInput("--resected: expected remove or keep, got '" + *resectedText + "'");
+    if ((resectedText || chipsOut) && !box)
+        badInput("--resected and --resected-out need --fix-box x0 y0 z0 x1 y1 z1 (the tissue's anchored region)");
+    if (chipsOut && resected != ResectedPieces::Remove)
+        badInput("--resected-out writes removed pieces: it needs --resected remove");
+    FixedSelection anchors;
+    if (box) {
+        const Vec3 lo((*box)[0], (*box)[1], (*box)[2]), hi((*box)[3], (*box)[4], (*box)[5]);
+        if ((lo.array() > hi.array()).any())
+            badInput("--fix-box: expected x0 <= x1, y0 <= y1, z0 <= z1");
+        anchors.box = std::array<Vec3, 2>{lo, hi};
+    }
     const auto surfaceIn = args.option("--surface");
     const auto surfaceOut = args.option("--surface-out");
     if (surfaceIn.has_value() != surfaceOut.has_value())
@@ -67,6 +98,11 @@ int runCut(Args args) {
         requireDistinct(files[0], *report);
     if (surfaceIn)
         requireDistinct(*surfaceIn, *surfaceOut);
+    if (chipsOut) {
+        requireDistinct(files[0], *chipsOut);
+        if (*chipsOut == out)
+            badInput("--resected-out and --out name the same file");
+    }
 
     TetMesh mesh;
     requireOk(readTetMesh(files[0], mesh));
@@ -83,8 +119,14 @@ int runCut(Args args) {
     // The rest state of the tissue's material (Eq. 3); cuts keep it up to date.
     computeLumpedMasses(mesh, material.density);
     Tissue tissue;
-    if (Status s = Tissue::create(std::move(mesh), std::move(surface), material, {}, tissue); !s.ok())
+    const double massBefore = sumOfMasses(mesh);
+    if (Status s = Tissue::create(std::move(mesh), std::move(surface), material, anchors, tissue); !s.ok())
         badInput((surfaceIn ? *surfaceIn : files[0]) + ": " + s.message());
+    if (box && tissue.anchors().empty())
+        badInput("--fix-box: no node of " + files[0] + " lies in the box");
+    tissue.setResectedPieces(box ? resected : ResectedPieces::Keep);
+    int collapsed = 0, smoothed = 0, removedTets = 0;
+    double improveMs = 0;
     CutStats total;
     int surfaceSplitEdges = 0, surfaceCapTriangles = 0;
     for (std::size_t i = 0; i < sweeps.size(); ++i) {
@@ -94,8 +136,30 @@ int runCut(Args args) {
         surfaceSplitEdges += cut.surface.surface.splitEdges;
         surfaceCapTriangles += cut.surface.surface.capTriangles;
         total += cut.tets;
+        collapsed += cut.collapsedEdges;
+        smoothed += cut.smoothedNodes;
+        removedTets += cut.removedTets;
+        improveMs += cut.improveMs;
     }
     requireOk(writeVtu(out, tissue.mesh()));
+    if (chipsOut) {
+        // All chips in one file, where they are.
+        std::vector<Vec3> positions;
+        std::vector<Tet> tets;
+        for (const Chip& chip : tissue.chips()) {
+            const int base = static_cast<int>(positions.size());
+            for (int n = 0; n < chip.mesh.nodeCount(); ++n)
+                positions.push_back(chip.mesh.pos(n));
+            for (Tet q : chip.mesh.tets()) {
+                for (int& v : q)
+                    v += base;
+                tets.push_back(q);
+            }
+        }
+        TetMesh chips = TetMesh::fromArrays(std::move(positions), std::move(tets));
+        computeLumpedMasses(chips, material.density);
+        requireOk(writeVtu(*chipsOut, chips));
+    }
     if (surfaceIn) {
         tissue.updateSurface();  // the surface deformed with the tets
         requireOk(writeSurface(*surfaceOut, tissue.surface().surface()));
@@ -123,7 +187,18 @@ int runCut(Args args) {
                                          {"cap_triangles", surfaceCapTriangles},
                                          {"vertices", tissue.surface().surface().vertexCount()},
                                          {"triangles", tissue.surface().surface().triangleCount()}};
+        cut["improvement"] = QJsonObject{{"enabled", options.improve},
+                                         {"collapsed_edges", collapsed},
+                                         {"smoothed_nodes", smoothed},
+                                         {"removed_tets", removedTets},
+                                         {"time_ms", improveMs}};
         QJsonObject r;
+        r["resected"] = QJsonObject{{"policy", box ? resectedPiecesName(resected) : "none"},
+                                    {"pieces", static_cast<int>(tissue.chips().size())},
+                                    {"volume", tissue.resectedVolume()},
+                                    {"mass", tissue.resectedMass()},
+                                    {"mass_before", massBefore},
+                                    {"mass_remaining", sumOfMasses(tissue.mesh())}};
         r["method"] = QString::fromStdString(method);
         r["triangulation"] = QString::fromStdString(triangulation);
         r["d"] = options.d;
@@ -132,9 +207,12 @@ int runCut(Args args) {
         r["cut"] = cut;
         requireOk(writeJson(*report, r));
     }
-    std::printf("%s: %d -> %d tets, %d pieces, min radius ratio %.4g -> %s\n", files[0].c_str(),
-                before["tets"].toInt(), after["tets"].toInt(), after["pieces"].toInt(),
-                after["min_radius_ratio"].toDouble(), out.c_str());
+    std::printf("%s: %d -> %d tets, %d pieces, min radius ratio %.4g", files[0].c_str(), before["tets"].toInt(),
+                after["tets"].toInt(), after["pieces"].toInt(), after["min_radius_ratio"].toDouble());
+    if (box && resected == ResectedPieces::Remove)
+        std::printf(", %d resected (volume %.4g mm^3, mass %.4g g)", static_cast<int>(tissue.chips().size()),
+                    tissue.resectedVolume(), tissue.resectedMass());
+    std::printf(" -> %s\n", out.c_str());
     return kOk;
 }
 

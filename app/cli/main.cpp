@@ -22,8 +22,13 @@ commands:
   cut MESH --sweep S.json [--sweep S2.json ...] --out OUT.vtu [--report R.json]
       [--method hybrid|subdivision] [--triangulation enhanced|standard] [--d 0.2] [--snap|--no-snap]
       [--relax-steps N] [--w-spring W] [--w-particle W] [--surface HI_RES --surface-out OUT.obj]
+      [--improve on|off] [--improve-quality Q] [--improve-short-edge S]
+      [--fix-box x0 y0 z0 x1 y1 z1 [--resected remove|keep] [--resected-out CHIPS.vtu]]
                                     cut along one or more sweep surfaces, one after another;
-                                    hybrid snaps and relaxes (10 steps) unless told not to
+                                    hybrid snaps and relaxes (10 steps) unless told not to;
+                                    the tets around each cut are improved (collapses,
+                                    smoothing) unless --improve off; with --fix-box, pieces
+                                    left without a node in the box are resected (removed)
   simulate MESH --steps N --out OUT.vtu [--report R.json] [--dt S]
       [--integrator explicit|implicit|velocity-verlet] [--effects deformation,gravity,...]
       [--fix-box x0 y0 z0 x1 y1 z1] [--damping C] [--tool x,y,z,... --tool-radius R]

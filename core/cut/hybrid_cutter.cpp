@@ -211,6 +211,10 @@ Status validateCutOptions(const CutOptions& o) {
         return Status::error(range("d (a fraction of the mean edge length)", 0, CutLimits::kMaxD, o.d));
     if (!(o.faceNodeAdvantage >= 0) || o.faceNodeAdvantage > CutLimits::kMaxFaceNodeAdvantage)
         return Status::error(range("faceNodeAdvantage", 0, CutLimits::kMaxFaceNodeAdvantage, o.faceNodeAdvantage));
+    if (!(o.improveQuality >= 0) || o.improveQuality > CutLimits::kMaxImproveQuality)
+        return Status::error(range("improveQuality", 0, CutLimits::kMaxImproveQuality, o.improveQuality));
+    if (!(o.improveShortEdge >= 0) || o.improveShortEdge > CutLimits::kMaxImproveShortEdge)
+        return Status::error(range("improveShortEdge", 0, CutLimits::kMaxImproveShortEdge, o.improveShortEdge));
     if (!(o.minEdgeFraction > 0) || o.minEdgeFraction > CutLimits::kMaxMinEdgeFraction)
         return Status::error(range("minEdgeFraction", 0, CutLimits::kMaxMinEdgeFraction, o.minEdgeFraction, true));
     if (!(o.snapQualityFloor >= 0) || o.snapQualityFloor > 1)

@@ -29,6 +29,8 @@ struct CutLimits {
     static constexpr double kMaxRelaxWeight = 1e6;        ///< wSpring, wParticle in [0, this]
     static constexpr double kMaxRelaxDamping = 1e6;       ///< relaxDamping in (0, this]
     static constexpr int kMaxRelaxRings = 5;              ///< relaxRings in [1, this]
+    static constexpr double kMaxImproveQuality = 4;       ///< improveQuality in [0, this]
+    static constexpr double kMaxImproveShortEdge = 4;     ///< improveShortEdge in [0, this]
 };
 
 struct CutOptions {
@@ -55,6 +57,14 @@ struct CutOptions {
     /// Density (g/mm^3, > 0) for the masses of Eq. 3, updated for every node whose tets
     /// changed. Tissue::cut uses its material's density instead.
     double density = Material{}.density;
+    /// Local mesh improvement after the cut (Tissue::cut, core/cut/improve_mesh.h): tets whose
+    /// radius ratio is below improveQuality times the tissue's worst as created are improved,
+    /// and edges shorter than improveShortEdge times its shortest as created are collapsed, in
+    /// the cut's neighbourhood. Dimensionless, in [0, CutLimits::kMaxImproveQuality] and [0,
+    /// CutLimits::kMaxImproveShortEdge]; improve = false turns the step off.
+    bool improve = true;
+    double improveQuality = 1.0;
+    double improveShortEdge = 0.5;
     /// Smallest fraction of an edge a split may cut off (see select_cut_nodes.h); in
     /// (0, CutLimits::kMaxMinEdgeFraction].
     double minEdgeFraction = 1e-6;

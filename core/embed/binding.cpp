@@ -127,6 +127,51 @@ void SurfaceBinding::compact(const std::vector<int>& kept, const std::vector<int
     sortByTet();
 }
 
+const std::vector<int>& SurfaceBinding::verticesOf(int t) const {
+    static const std::vector<int> none;
+    return t >= 0 && t < static_cast<int>(m_verticesOfTet.size()) ? m_verticesOfTet[t] : none;
+}
+
+void SurfaceBinding::rebindAfterRemesh(const TetMesh& mesh, const std::vector<int>& vertices,
+                                       const std::vector<Vec3>& positions,
+                                       const std::vector<std::vector<int>>& candidates,
+                                       const std::vector<int>& newTet) {
+    if (!newTet.empty()) {
+        for (int v = 0; v < vertexCount(); ++v)
+            m_tet[v] = newTet[m_tet[v]];
+    } else {
+        for (int v : vertices) {
+            auto& list = m_verticesOfTet[m_tet[v]];
+            list.erase(std::remove(list.begin(), list.end(), v), list.end());
+        }
+    }
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        const int v = vertices[i];
+        const int old = m_tet[v];
+        m_tet[v] = -1;
+        bindVertex(mesh, v, positions[i], candidates[i]);
+        if (m_tet[v] < 0) {  // no candidate left (cannot happen for a node that still has tets)
+            m_tet[v] = old >= 0 ? old : 0;
+            m_weights[v] = barycentricInTet(mesh, m_tet[v], positions[i]);
+        }
+    }
+    if (!newTet.empty()) {
+        m_verticesOfTet.assign(mesh.tetCount(), {});
+        for (int v = 0; v < vertexCount(); ++v)
+            m_verticesOfTet[m_tet[v]].push_back(v);
+        sortByTet();
+    } else {
+        if (static_cast<int>(m_verticesOfTet.size()) < mesh.tetCount())
+            m_verticesOfTet.resize(mesh.tetCount());
+        for (int v : vertices)
+            m_verticesOfTet[m_tet[v]].push_back(v);
+    }
+    m_outside = 0;
+    for (const auto& w : m_weights)
+        if (std::min({w[0], w[1], w[2], w[3]}) < -m_tolerances.inside)
+            ++m_outside;
+}
+
 void SurfaceBinding::sortByTet() {
     m_order.resize(m_tet.size());
     std::iota(m_order.begin(), m_order.end(), 0);

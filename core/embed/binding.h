@@ -65,6 +65,16 @@ public:
     void compact(const std::vector<int>& kept, const std::vector<int>& newTetOf, int tetCount,
                  const std::unordered_map<int, std::pair<int, std::array<double, 4>>>& rebound = {});
 
+    /// After the tets were remeshed locally (core/cut/improve_mesh.h): `vertices` (at their
+    /// current `positions`) are bound again to the tet of `candidates[i]` that contains them best;
+    /// every other vertex keeps its coordinates, its tet renumbered through `newTet` (old -> new;
+    /// empty: no renumbering; the tets of the other vertices must survive). O(vertices) without a
+    /// renumbering, O(surface) with one.
+    void rebindAfterRemesh(const TetMesh& mesh, const std::vector<int>& vertices, const std::vector<Vec3>& positions,
+                           const std::vector<std::vector<int>>& candidates, const std::vector<int>& newTet);
+    /// Vertices bound to tet t.
+    const std::vector<int>& verticesOf(int t) const;
+
     int vertexCount() const { return static_cast<int>(m_tet.size()); }
     int tetOf(int vertex) const { return m_tet[vertex]; }
     const std::array<double, 4>& weightsOf(int vertex) const { return m_weights[vertex]; }

@@ -2,6 +2,7 @@
 
 #include "core/mesh/union_find.h"
 
+#include <algorithm>
 #include <chrono>
 #include <limits>
 #include <map>
@@ -141,6 +142,40 @@ std::vector<TriangleSurface> EmbeddedSurface::splitOff(const std::vector<int>& p
     m_binding.compact(kept, newTetOf, mesh.tetCount(), rebound);
     m_surface = std::move(remaining);
     return out;
+}
+
+EmbeddedSurface::RemeshRecord EmbeddedSurface::recordAround(const TetMesh& mesh, const std::vector<int>& tets) const {
+    RemeshRecord record;
+    if (empty())
+        return record;
+    for (int t : tets)
+        for (int v : m_binding.verticesOf(t)) {
+            const Tet& q = mesh.tet(t);
+            const auto& w = m_binding.weightsOf(v);
+            record.vertices.push_back(v);
+            record.positions.push_back(w[0] * mesh.pos(q[0]) + w[1] * mesh.pos(q[1]) + w[2] * mesh.pos(q[2]) +
+                                       w[3] * mesh.pos(q[3]));
+            record.nodes.push_back(q);
+        }
+    return record;
+}
+
+void EmbeddedSurface::followRemesh(const TetMesh& mesh, const RemeshRecord& record, const std::vector<int>& newTet,
+                                   const std::vector<int>& newNode) {
+    if (empty())
+        return;
+    std::vector<std::vector<int>> candidates(record.vertices.size());
+    for (std::size_t i = 0; i < record.vertices.size(); ++i) {
+        std::vector<int>& c = candidates[i];
+        for (int n : record.nodes[i]) {
+            const int node = newNode.empty() ? n : newNode[n];
+            if (node >= 0)
+                c.insert(c.end(), mesh.nodeTets(node).begin(), mesh.nodeTets(node).end());
+        }
+        std::sort(c.begin(), c.end());
+        c.erase(std::unique(c.begin(), c.end()), c.end());
+    }
+    m_binding.rebindAfterRemesh(mesh, record.vertices, record.positions, candidates, newTet);
 }
 
 } // namespace resect

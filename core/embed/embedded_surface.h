@@ -43,6 +43,21 @@ public:
     std::vector<TriangleSurface> splitOff(const std::vector<int>& pieceOfTet, int pieces,
                                           const std::vector<int>& newTetOf, const TetMesh& mesh);
 
+    /// Around a local remeshing of the tets (core/cut/improve_mesh.h): recordAround() notes the
+    /// vertices bound to the tets that may change, with their current positions and their tets'
+    /// nodes; followRemesh() binds them again among the tets of those nodes afterwards (mapped
+    /// through newNode, old -> new, empty: unchanged), and renumbers the other vertices' tets
+    /// through newTet (empty: unchanged). In proportion to the recorded vertices (plus the
+    /// surface when renumbered).
+    struct RemeshRecord {
+        std::vector<int> vertices;
+        std::vector<Vec3> positions;
+        std::vector<Tet> nodes;
+    };
+    RemeshRecord recordAround(const TetMesh& mesh, const std::vector<int>& tets) const;
+    void followRemesh(const TetMesh& mesh, const RemeshRecord& record, const std::vector<int>& newTet,
+                      const std::vector<int>& newNode);
+
     bool empty() const { return m_surface.triangles.empty(); }
     const TriangleSurface& surface() const { return m_surface; }
     const SurfaceBinding& binding() const { return m_binding; }

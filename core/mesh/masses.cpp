@@ -17,4 +17,11 @@ void computeLumpedMasses(TetMesh& mesh, double density) {
     }
 }
 
+double sumOfMasses(const TetMesh& mesh) {
+    double sum = 0;
+    for (double m : mesh.masses())
+        sum += m;
+    return sum;
+}
+
 } // namespace resect

@@ -9,4 +9,7 @@ namespace resect {
 /// Sets every node's mass from the reference volumes of its tets and the density.
 void computeLumpedMasses(TetMesh& mesh, double density);
 
+/// The sum of the node masses (g).
+double sumOfMasses(const TetMesh& mesh);
+
 } // namespace resect

@@ -56,6 +56,47 @@ void TetMesh::replaceTet(int t, const Tet& nodes) {
     attach(t);
 }
 
+void TetMesh::removeTet(int t) {
+    const int last = tetCount() - 1;
+    willChangeTet(t);
+    willChangeTet(last);
+    willChangeNodesOf(m_tets[t]);
+    willChangeNodesOf(m_tets[last]);
+    detach(t);
+    if (t != last) {
+        detach(last);
+        m_tets[t] = m_tets[last];
+        attach(t);
+    }
+    m_tets.pop_back();
+}
+
+void TetMesh::removeNode(int n) {
+    assert(m_nodeTets[n].empty());
+    const int last = nodeCount() - 1;
+    willChangeNode(n);
+    willChangeNode(last);
+    if (n != last) {
+        for (int t : m_nodeTets[last]) {
+            willChangeTet(t);
+            willChangeNodesOf(m_tets[t]);
+            for (int& v : m_tets[t])
+                if (v == last)
+                    v = n;
+        }
+        m_ref[n] = m_ref[last];
+        m_pos[n] = m_pos[last];
+        m_vel[n] = m_vel[last];
+        m_mass[n] = m_mass[last];
+        m_nodeTets[n] = std::move(m_nodeTets[last]);
+    }
+    m_ref.pop_back();
+    m_pos.pop_back();
+    m_vel.pop_back();
+    m_mass.pop_back();
+    m_nodeTets.pop_back();
+}
+
 void TetMesh::reserve(int nodes, int tets) {
     m_ref.reserve(nodes);
     m_pos.reserve(nodes);

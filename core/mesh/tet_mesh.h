@@ -75,6 +75,12 @@ public:
     /// Replaces the nodes of tet t (used when a tet is decomposed in place or re-attached
     /// to a duplicated node).
     void replaceTet(int t, const Tet& nodes);
+    /// Removes tet t: the last tet takes its slot (so tet indices above t may change: the last
+    /// one becomes t). O(valence). Recorded by open backups.
+    void removeTet(int t);
+    /// Removes node n, which no tet may use: the last node takes its index (the tets of the
+    /// last node are relabelled). O(valence of the last node). Recorded by open backups.
+    void removeNode(int n);
     void reserve(int nodes, int tets);
     /// Removes the trailing tets and nodes beyond the given counts. The remaining tets must
     /// not refer to removed nodes. (To undo an edit exactly, use a TetMeshBackup.)

@@ -1,6 +1,8 @@
 #include "core/tissue/tissue.h"
 
+#include "core/cut/improve_mesh.h"
 #include "core/mesh/masses.h"
+#include "core/mesh/quality.h"
 #include "core/mesh/tet_mesh_backup.h"
 
 #include <algorithm>
@@ -46,6 +48,8 @@ Tissue& Tissue::operator=(Tissue&& other) noexcept {
         m_resectedVolume = other.m_resectedVolume;
         m_resectedMass = other.m_resectedMass;
         m_floor = other.m_floor;
+        m_inputWorstRatio = other.m_inputWorstRatio;
+        m_inputShortestEdge = other.m_inputShortestEdge;
         m_stepsSeen = other.m_stepsSeen;
         m_indexStale = other.m_indexStale;
         m_surfaceStale = other.m_surfaceStale;
@@ -59,7 +63,8 @@ Tissue::Tissue(const Tissue& other)
       m_cutter(std::make_unique<HybridCutter>(*other.m_cutter, *m_mesh)), m_surface(other.m_surface),
       m_material(other.m_material), m_anchors(other.m_anchors), m_schemes(other.m_schemes), m_cuts(other.m_cuts),
       m_resected(other.m_resected), m_chips(other.m_chips), m_resectedVolume(other.m_resectedVolume),
-      m_resectedMass(other.m_resectedMass), m_floor(other.m_floor), m_pieces(std::make_unique<PiecesCache>()) {
+      m_resectedMass(other.m_resectedMass), m_floor(other.m_floor), m_inputWorstRatio(other.m_inputWorstRatio),
+      m_inputShortestEdge(other.m_inputShortestEdge), m_pieces(std::make_unique<PiecesCache>()) {
     const bool stepped = other.m_sim && other.m_sim->stepsTaken() != other.m_stepsSeen;
     m_indexStale = other.m_indexStale || stepped;
     m_surfaceStale = other.m_surfaceStale || stepped;
@@ -85,6 +90,13 @@ Status Tissue::create(TetMesh mesh, TriangleSurface surface, const Material& mat
     t.m_floor = std::numeric_limits<double>::infinity();
     for (const Vec3& p : mesh.positions())
         t.m_floor = std::min(t.m_floor, p.z());
+    t.m_inputWorstRatio = 1;
+    t.m_inputShortestEdge = std::numeric_limits<double>::infinity();
+    for (const Tet& q : mesh.tets()) {
+        t.m_inputWorstRatio = std::min(t.m_inputWorstRatio, radiusRatio(mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3])));
+        for (const auto& e : kTetEdges)
+            t.m_inputShortestEdge = std::min(t.m_inputShortestEdge, (mesh.ref(q[e[0]]) - mesh.ref(q[e[1]])).norm());
+    }
     *t.m_mesh = std::move(mesh);
     t.m_cutter = std::make_unique<HybridCutter>(*t.m_mesh);
     out = std::move(t);
@@ -195,12 +207,32 @@ Status Tissue::cut(const SweepSurface& sweep, const CutOptions& requested, Tissu
 
     result.tets = cut.stats;
     result.changes = std::move(cut.changes);
+    // The nodes around which step 7 improves the tets.
+    std::vector<int> seeds = result.changes.touchedNodes;
+    seeds.insert(seeds.end(), result.changes.cutSurfaceNodes.begin(), result.changes.cutSurfaceNodes.end());
+    bool rebuild = false;
 
     // 6. Resected pieces leave.
     if (m_resected != ResectedPieces::Keep && !m_anchors.empty()) {
         t0 = Clock::now();
-        resect(result);
+        resect(result, seeds, rebuild);
         result.resectionMs = msSince(t0);
+    }
+
+    // 7. The tets around the cut are improved.
+    if (options.improve) {
+        t0 = Clock::now();
+        improve(result, seeds, options, rebuild);
+        result.improveMs = msSince(t0);
+    }
+    if (rebuild) {
+        result.simulationRebuilt = m_sim != nullptr;
+        rebuildSimulation();
+        // The change list's indices refer to the mesh before the renumbering: it is no use to
+        // followers any more, which rebuild.
+        result.changes = {};
+        result.changes.firstNewNode = m_mesh->nodeCount();
+        result.changes.firstNewTet = m_mesh->tetCount();
     }
 
     result.totalMs = msSince(start);
@@ -209,7 +241,7 @@ Status Tissue::cut(const SweepSurface& sweep, const CutOptions& requested, Tissu
     return Status::success();
 }
 
-void Tissue::resect(TissueCut& result) {
+void Tissue::resect(TissueCut& result, std::vector<int>& seeds, bool& rebuild) {
     const Components& comp = pieces();
     if (comp.count <= 1)
         return;
@@ -223,42 +255,94 @@ void Tissue::resect(TissueCut& result) {
         chip.surface = std::move(surfaces[c]);
         makeRigidBody(chip);
     }
-    // Everything indexed by node or tet follows the renumbering.
-    FixedSelection anchors;
-    for (int n : m_anchors.nodes())
+    renumber(r.newTet, r.newNode);
+    std::vector<int> kept;
+    for (int n : seeds)
         if (r.newNode[n] >= 0)
-            anchors.nodes.push_back(r.newNode[n]);
-    anchors.box = m_anchors.box();
-    (void)Anchors::create(*m_mesh, anchors, m_anchors);  // valid by construction
-    std::vector<Scheme> schemes(m_mesh->tetCount(), Scheme::None);
-    for (std::size_t t = 0; t < r.newTet.size(); ++t)
-        if (r.newTet[t] >= 0)
-            schemes[r.newTet[t]] = m_schemes[t];
-    m_schemes = std::move(schemes);
-    m_cutter->refreshSpatialIndex();
-    m_indexStale = false;
-    {
-        std::lock_guard lock(m_pieces->mutex);
-        m_pieces->components.reset();
-    }
-    // The simulation is rebuilt on what remains; its clock goes on.
-    if (m_sim) {
-        const double time = m_sim->time();
-        const int steps = m_sim->stepsTaken();
-        if (startSimulation(m_setup).ok())
-            m_sim->resumeClock(time, steps);
-        m_stepsSeen = steps;
-    }
+            kept.push_back(r.newNode[n]);
+    seeds = std::move(kept);
+    rebuild = true;
     m_resectedVolume += r.volume;
     m_resectedMass += r.mass;
     result.resectedPieces = r.chips;
     result.resectedVolume = r.volume;
     result.resectedMass = r.mass;
-    // The change list's indices refer to the mesh before the resection: it is no use to
-    // followers any more, which rebuild (a resection renumbers the tissue).
-    result.changes = {};
-    result.changes.firstNewNode = m_mesh->nodeCount();
-    result.changes.firstNewTet = m_mesh->tetCount();
+}
+
+void Tissue::improve(TissueCut& result, const std::vector<int>& seeds, const CutOptions& options, bool& rebuild) {
+    ImproveOptions io;
+    io.badRatio = options.improveQuality * m_inputWorstRatio;
+    io.shortEdge = options.improveShortEdge * m_inputShortestEdge;
+    io.density = m_material.density;
+    io.keepOut = m_anchors.box();
+    const ImproveRegion region = improveRegion(*m_mesh, seeds, m_anchors.nodes(), io.rings);
+    const EmbeddedSurface::RemeshRecord record = m_surface.recordAround(*m_mesh, region.tets);
+    const ImproveResult r = improveMesh(*m_mesh, region, io);
+    result.collapsedEdges = r.collapses;
+    result.smoothedNodes = r.smoothed;
+    result.removedTets = r.removedTets;
+    if (r.movedNodes.empty() && !r.renumbered())
+        return;
+    m_surface.followRemesh(*m_mesh, record, r.newTet, r.newNode);
+    if (r.renumbered()) {
+        renumber(r.newTet, r.newNode);
+        rebuild = true;
+        return;
+    }
+    // Only nodes moved: the index, the simulation and the change list follow locally.
+    for (int n : r.movedNodes)
+        for (int t : m_mesh->nodeTets(n))
+            m_cutter->grid().insert(*m_mesh, t);
+    if (m_sim && !rebuild) {
+        CutChanges moved;
+        moved.firstNewNode = m_mesh->nodeCount();
+        moved.firstNewTet = m_mesh->tetCount();
+        moved.touchedNodes = r.touchedNodes;
+        m_sim->applyCut(moved);
+    }
+    CutChanges& changes = result.changes;
+    std::vector<int> touched = changes.touchedNodes;
+    touched.insert(touched.end(), r.touchedNodes.begin(), r.touchedNodes.end());
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    changes.touchedNodes = std::move(touched);
+    for (int n : r.movedNodes)
+        for (int t : m_mesh->nodeTets(n))
+            if (t < changes.firstNewTet)
+                changes.modifiedTets.push_back(t);
+    std::sort(changes.modifiedTets.begin(), changes.modifiedTets.end());
+    changes.modifiedTets.erase(std::unique(changes.modifiedTets.begin(), changes.modifiedTets.end()),
+                               changes.modifiedTets.end());
+}
+
+void Tissue::renumber(const std::vector<int>& newTet, const std::vector<int>& newNode) {
+    FixedSelection anchors;
+    for (int n : m_anchors.nodes())
+        if (newNode[n] >= 0)
+            anchors.nodes.push_back(newNode[n]);
+    std::sort(anchors.nodes.begin(), anchors.nodes.end());
+    anchors.nodes.erase(std::unique(anchors.nodes.begin(), anchors.nodes.end()), anchors.nodes.end());
+    anchors.box = m_anchors.box();
+    (void)Anchors::create(*m_mesh, anchors, m_anchors);  // valid by construction
+    std::vector<Scheme> schemes(m_mesh->tetCount(), Scheme::None);
+    for (std::size_t t = 0; t < newTet.size() && t < m_schemes.size(); ++t)
+        if (newTet[t] >= 0)
+            schemes[newTet[t]] = m_schemes[t];
+    m_schemes = std::move(schemes);
+    m_cutter->refreshSpatialIndex();
+    m_indexStale = false;
+    std::lock_guard lock(m_pieces->mutex);
+    m_pieces->components.reset();
+}
+
+void Tissue::rebuildSimulation() {
+    if (!m_sim)
+        return;
+    const double time = m_sim->time();
+    const int steps = m_sim->stepsTaken();
+    if (startSimulation(m_setup).ok())
+        m_sim->resumeClock(time, steps);
+    m_stepsSeen = steps;
 }
 
 Status Tissue::startSimulation(const SimulationSetup& setup) {

@@ -17,7 +17,11 @@
 //   5. anchors, schemes and pieces follow;
 //   6. pieces that no longer touch an anchored node are resected (resect_pieces.h) when the
 //      tissue's ResectedPieces says so: they leave the tet mesh and its surface and become
-//      chips (removed, or rigid bodies that fall); the simulation is rebuilt on what remains.
+//      chips (removed, or rigid bodies that fall); the simulation is rebuilt on what remains;
+//   7. the tets around the cut are improved (CutOptions::improve, core/cut/improve_mesh.h):
+//      bad tets and short edges, measured against the tissue as created, are smoothed away or
+//      collapsed; the surface is re-bound around them and the simulation follows (locally, or
+//      rebuilt when tets were removed).
 // Every stage that can fail (2 and 3) runs before the ones that cannot be undone, under a
 // backup of the mesh and the spatial index: on failure or cancellation the tissue is exactly
 // as it was (the mesh bit-identical, node adjacency order included; the surface, its binding,
@@ -48,6 +52,13 @@ struct TissueCut {
     double surfaceMs = 0;    ///< surface update, cut and re-binding together
     double simulationMs = 0; ///< the simulator's effects following the change list
     double resectionMs = 0;  ///< removing resected pieces (0 if none)
+    double improveMs = 0;    ///< the improvement step (0 if off)
+    int collapsedEdges = 0;  ///< edges the improvement collapsed
+    int smoothedNodes = 0;   ///< nodes it moved to raise their worst tet
+    int removedTets = 0;     ///< tets the collapses removed (with addedTets: the change in count)
+    /// The running simulation was rebuilt (tets were resected or renumbered): pointers to it
+    /// or its effects taken before the cut are stale.
+    bool simulationRebuilt = false;
     double totalMs = 0;      ///< the whole cut, every stage
     int resectedPieces = 0;  ///< pieces this cut resected (they are chips now)
     double resectedVolume = 0, resectedMass = 0;  ///< their reference volume (mm^3) and mass (g)
@@ -96,6 +107,10 @@ public:
     double meanEdgeLength() const { return m_cutter->meanEdgeLength(); }
     /// Cuts applied since create().
     int cutCount() const { return m_cuts; }
+    /// The smallest radius ratio and the shortest edge (reference) of the tissue as created:
+    /// the yardsticks of the improvement step.
+    double inputWorstRatio() const { return m_inputWorstRatio; }
+    double inputShortestEdge() const { return m_inputShortestEdge; }
 
     /// What happens to pieces that no longer touch an anchored node after a cut (Keep by
     /// default; nothing is resected without anchors).
@@ -140,8 +155,17 @@ private:
     void followPositions();
     /// Step 5 of cut(): the scheme of every tet the cut produced or changed.
     void updateSchemes(const CutChanges& changes);
-    /// Step 6 of cut(): resected pieces leave the tissue; fills the result's counts.
-    void resect(TissueCut& result);
+    /// Step 6 of cut(): resected pieces leave the tissue; fills the result's counts. `seeds`
+    /// (nodes) are renumbered, the ones resected dropped; `rebuild` is set if the simulation
+    /// must be rebuilt.
+    void resect(TissueCut& result, std::vector<int>& seeds, bool& rebuild);
+    /// Step 7 of cut(): improvement around `seeds`.
+    void improve(TissueCut& result, const std::vector<int>& seeds, const CutOptions& options, bool& rebuild);
+    /// Anchors, schemes, the spatial index and the pieces follow a renumbering of the tets and
+    /// nodes (old -> new, -1: gone).
+    void renumber(const std::vector<int>& newTet, const std::vector<int>& newNode);
+    /// Rebuilds the running simulation on the tissue as it is, its clock going on.
+    void rebuildSimulation();
 
     std::unique_ptr<TetMesh> m_mesh;        // on the heap: the cutter and simulator refer to it
     std::unique_ptr<HybridCutter> m_cutter;
@@ -156,6 +180,7 @@ private:
     std::vector<Chip> m_chips;
     double m_resectedVolume = 0, m_resectedMass = 0;
     double m_floor = 0;         ///< z of the tissue's lowest node as created: where chips come to rest
+    double m_inputWorstRatio = 0, m_inputShortestEdge = 0;  ///< of the tissue as created
     int m_stepsSeen = 0;        ///< simulator steps when the tissue last looked
     bool m_indexStale = false;  ///< the tets moved since the spatial index was built
     bool m_surfaceStale = true; ///< the tets moved since the surface last followed them

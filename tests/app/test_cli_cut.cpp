@@ -35,6 +35,13 @@ void write(const QString& path, const QByteArray& text) {
     f.write(text);
 }
 
+QJsonObject readJson(const QString& file) {
+    QFile f(file);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    return QJsonDocument::fromJson(f.readAll()).object();
+}
+
 /// A nearly horizontal planar sweep from z = h to z = h + 0.1 across the 2 x 2 x 1 box
 /// (start and end curve along x); node layers are at multiples of 1/3.
 QByteArray planeSweep(double h) {
@@ -169,17 +176,72 @@ private slots:
 
     void subdivisionAddsMoreTets() {
         // Just above the node layer z = 1/3: hybrid separates those nodes, subdivision
-        // splits every crossed edge close to them.
+        // splits every crossed edge close to them (the methods alone, without step 7's
+        // improvement, which collapses the short edges subdivision makes).
         write(path("near.json"), planeSweep(0.34));
-        QVERIFY(runCli({"cut", path("box.vtu"), "--sweep", path("near.json"), "--out", path("h.vtu")}).code == 0);
+        QVERIFY(runCli({"cut", path("box.vtu"), "--sweep", path("near.json"), "--out", path("h.vtu"), "--improve",
+                        "off"}).code == 0);
         QVERIFY(runCli({"cut", path("box.vtu"), "--sweep", path("near.json"), "--out", path("s.vtu"), "--method",
-                        "subdivision"}).code == 0);
+                        "subdivision", "--improve", "off"}).code == 0);
         TetMesh h, s;
         QVERIFY(readTetMesh(path("h.vtu").toStdString(), h).ok());
         QVERIFY(readTetMesh(path("s.vtu").toStdString(), s).ok());
         QVERIFY(s.tetCount() > h.tetCount());
     }
 
+
+    void resectedPiecesLeaveTheOutput() {
+        // Fixed at the bottom, the box cut at z = 0.45..0.55: the top piece is resected. By
+        // default it leaves the output (written to --resected-out on request); the report
+        // accounts for its volume and mass; with --resected keep it stays in the mesh.
+        const QString base = path("box.vtu");
+        const QStringList common{"cut", base, "--sweep", path("low.json"), "--fix-box", "-1", "-1", "-1", "3", "3", "0.1"};
+        Run r = runCli(common + QStringList{"--out", path("r.vtu"), "--resected-out", path("chips.vtu"), "--report",
+                                            path("r.json")});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains("1 resected"), qPrintable(r.out));
+        TetMesh kept, chips, input;
+        QVERIFY(readTetMesh(base.toStdString(), input).ok());
+        QVERIFY(readTetMesh(path("r.vtu").toStdString(), kept).ok());
+        QVERIFY(readTetMesh(path("chips.vtu").toStdString(), chips).ok());
+        QCOMPARE(connectedComponents(kept).count, 1);
+        QCOMPARE(connectedComponents(chips).count, 1);
+        for (int n = 0; n < kept.nodeCount(); ++n)
+            QVERIFY(kept.ref(n).z() <= 0.55 + 1e-9);
+        const double volume = input.totalReferenceVolume();
+        QVERIFY(std::abs(kept.totalReferenceVolume() + chips.totalReferenceVolume() - volume) <= 1e-9 * volume);
+        const QJsonObject resected = readJson(path("r.json"))["resected"].toObject();
+        QCOMPARE(resected["policy"].toString(), QString("remove"));
+        QCOMPARE(resected["pieces"].toInt(), 1);
+        QVERIFY(std::abs(resected["volume"].toDouble() - chips.totalReferenceVolume()) <= 1e-9 * volume);
+        const double massBefore = resected["mass_before"].toDouble();
+        QVERIFY(massBefore > 0);
+        QVERIFY(std::abs(resected["mass_remaining"].toDouble() + resected["mass"].toDouble() - massBefore) <= 1e-9 * massBefore);
+        // Kept: both pieces in the output.
+        r = runCli(common + QStringList{"--out", path("k.vtu"), "--resected", "keep"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        TetMesh both;
+        QVERIFY(readTetMesh(path("k.vtu").toStdString(), both).ok());
+        QCOMPARE(connectedComponents(both).count, 2);
+    }
+
+    void improvementIsReported() {
+        // Step 7 is on by default and reported; --improve off leaves the bare hybrid cut.
+        write(path("near.json"), planeSweep(0.34));
+        Run r = runCli({"cut", path("box.vtu"), "--sweep", path("near.json"), "--out", path("i.vtu"), "--report",
+                        path("i.json")});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const QJsonObject on = readJson(path("i.json"))["cut"].toObject()["improvement"].toObject();
+        QCOMPARE(on["enabled"].toBool(), true);
+        QVERIFY(on["collapsed_edges"].toInt() >= 0 && on["smoothed_nodes"].toInt() >= 0);
+        r = runCli({"cut", path("box.vtu"), "--sweep", path("near.json"), "--out", path("o.vtu"), "--report",
+                    path("o.json"), "--improve", "off"});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const QJsonObject off = readJson(path("o.json"))["cut"].toObject()["improvement"].toObject();
+        QCOMPARE(off["enabled"].toBool(), false);
+        QCOMPARE(off["collapsed_edges"].toInt(), 0);
+        QCOMPARE(off["smoothed_nodes"].toInt(), 0);
+    }
 
     void cliAndReplayCutBitIdentically() {
         // One cut path (core/tissue): `resect cut` and a scenario replayed with the same
@@ -249,6 +311,15 @@ private slots:
         QTest::newRow("surface without output") << QStringList{"--surface", "x.obj"} << ok << "--surface";
         QTest::newRow("missing surface file") << QStringList{"--surface", "/nonexistent/s.obj", "--surface-out", "o.obj"} << ok
                                               << "/nonexistent/s.obj";
+        QTest::newRow("improve neither on nor off") << QStringList{"--improve", "maybe"} << ok << "--improve";
+        QTest::newRow("improve quality out of range") << QStringList{"--improve-quality", "9"} << ok << "--improve-quality";
+        QTest::newRow("resected without a fixed box") << QStringList{"--resected", "keep"} << ok << "--fix-box";
+        QTest::newRow("resected rigid in cut") << QStringList{"--fix-box", "-1", "-1", "-1", "3", "3", "0.1", "--resected", "rigid"}
+                                               << ok << "--resected";
+        QTest::newRow("fix box inverted") << QStringList{"--fix-box", "3", "3", "3", "-1", "-1", "-1"} << ok << "--fix-box";
+        QTest::newRow("fix box holds no node") << QStringList{"--fix-box", "10", "10", "10", "11", "11", "11"} << ok << "no node";
+        QTest::newRow("chips kept but written") << QStringList{"--fix-box", "-1", "-1", "-1", "3", "3", "0.1", "--resected", "keep",
+                                                               "--resected-out", "c.vtu"} << ok << "--resected-out";
     }
     void badInput() {
         QFETCH(QStringList, extra);

@@ -29,7 +29,7 @@ private slots:
         CutStudy study;
         const Status s = runCutStudy(mesh, loopScoopSweep(mesh, height), 0.2, options.material, study);
         QVERIFY2(s.ok(), s.message().c_str());
-        QCOMPARE(int(study.columns.size()), 6);
+        QCOMPARE(int(study.columns.size()), 7);
         const StudyColumn& original = study.columns[0];
         const StudyColumn& subdivision = study.columns[1];
         const StudyColumn& enhanced = study.columns[3];
@@ -53,6 +53,12 @@ private slots:
         const StudyColumn& relaxed = study.columns[5];
         QVERIFY(relaxed.quality.minRadiusRatio >= snapped.quality.minRadiusRatio);
         QVERIFY(snapped.stats.snappedNodes + snapped.stats.refusedSnaps == snapped.stats.cutNodes);
+        // The defaults add the mesh improvement (step 7): the worst element stays at least half
+        // the input's, with no more tets than the paper's hybrid cut.
+        const StudyColumn& improved = study.columns[6];
+        QVERIFY2(improved.quality.minRadiusRatio >= 0.5 * original.quality.minRadiusRatio,
+                 qPrintable(QString("improved %1 vs input %2").arg(improved.quality.minRadiusRatio).arg(original.quality.minRadiusRatio)));
+        QVERIFY(improved.quality.tets <= relaxed.quality.tets);
     }
 };
 

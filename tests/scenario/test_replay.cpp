@@ -7,6 +7,8 @@
 #include "core/mesh/box_mesh.h"
 #include "core/mesh/masses.h"
 
+#include "core/cut/improve_mesh.h"
+
 #include <QTest>
 
 using namespace resect;
@@ -95,7 +97,11 @@ private slots:
         double top = -1e9;
         for (int n = 0; n < out.mesh.nodeCount(); ++n)
             top = std::max(top, out.mesh.ref(n).z());
-        QVERIFY(top < 2.4);  // nothing above the cut is left in the tissue
+        // Nothing above the cut is left in the tissue (z = 2.3 + 0.01 x <= 2.34), but for the
+        // mesh improvement's bounded deviation off a curved or creased boundary (maxDeviation
+        // times the local boundary edge, at most the face diagonal sqrt 2 here).
+        const double slack = ImproveOptions{}.maxDeviation * std::sqrt(2.0);
+        QVERIFY2(top <= 2.34 + slack, qPrintable(QString::number(top)));
         QCOMPARE(out.inverted, 0);
     }
 

@@ -123,7 +123,8 @@ private slots:
         // Tets: the head is cut off, volume and mass (Eq. 3, updated locally) are conserved.
         QCOMPARE(tissue.pieces().count, 2);
         QCOMPARE(tissue.cutCount(), 1);
-        QCOMPARE(mesh.tetCount(), tetsBefore + cut.tets.addedTets);
+        // The improvement step (7) may collapse edges the cut left short, removing tets.
+        QCOMPARE(mesh.tetCount(), tetsBefore + cut.tets.addedTets - cut.removedTets);
         QVERIFY(cut.tets.addedTets > 0);
         QVERIFY(std::abs(mesh.totalReferenceVolume() - volumeBefore) <= 1e-12 * volumeBefore);
         QVERIFY(std::abs(totalMass(mesh) - massBefore) <= 1e-12 * massBefore);
@@ -148,12 +149,18 @@ private slots:
         for (int n : tissue.anchors().nodes())
             anchoredPieces.insert(pieces.nodeComponent[n]);
         QCOMPARE(static_cast<int>(anchoredPieces.size()), 1);
+        // No tet is inverted by the cut (nor by the improvement after it) where the tissue is now.
+        for (int t = 0; t < mesh.tetCount(); ++t)
+            QVERIFY2(mesh.currentVolume(t) > 0, qPrintable(QString("tet %1 after the cut").arg(t)));
         // The simulation goes on from where it was, with the cut's tets.
         QCOMPARE(tissue.simulator()->stepsTaken(), 10);
+        // (At the step the cut tissue allows: the cut made smaller elements.)
+        const double dtAfter = tissue.simulator()->timeStep();
+        QVERIFY(dtAfter > 0 && dtAfter <= dt);
         for (int i = 0; i < 10; ++i)
-            QVERIFY(tissue.step(dt).ok());
+            QVERIFY(tissue.step(dtAfter).ok());
         for (int t = 0; t < mesh.tetCount(); ++t)
-            QVERIFY(mesh.currentVolume(t) > 0);
+            QVERIFY2(mesh.currentVolume(t) > 0, qPrintable(QString("tet %1 after 10 steps").arg(t)));
     }
 
     void anchorsFollowACutThroughThem() {
@@ -314,7 +321,7 @@ private slots:
         QCOMPARE(tissue.pieces().count, 1);
         const Chip& chip = tissue.chips().front();
         QCOMPARE(chip.cut, 1);
-        QCOMPARE(tissue.mesh().tetCount() + chip.mesh.tetCount(), tets + cut.tets.addedTets);
+        QCOMPARE(tissue.mesh().tetCount() + chip.mesh.tetCount(), tets + cut.tets.addedTets - cut.removedTets);
         QVERIFY(std::abs(totalMass(tissue.mesh()) + tissue.resectedMass() - mass) <= 1e-12 * mass);
         QVERIFY(std::abs(tissue.mesh().totalReferenceVolume() + tissue.resectedVolume() - volume) <= 1e-12 * volume);
         QCOMPARE(tissue.resectedMass(), chip.mass);

@@ -1,0 +1,802 @@
+#include "core/cut/improve_mesh.h"
+
+#include "core/cut/update_rest_state.h"
+#include "core/mesh/predicates.h"
+#include "core/mesh/quality.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace resect {
+
+double pointTriangleDistance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    // Closest point by Voronoi regions of the triangle (vertices, edges, face).
+    const Vec3 ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+    if (d1 <= 0 && d2 <= 0)
+        return ap.norm();
+    const Vec3 bp = p - b;
+    const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+    if (d3 >= 0 && d4 <= d3)
+        return bp.norm();
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0)
+        return (p - (a + ab * (d1 / (d1 - d3)))).norm();
+    const Vec3 cp = p - c;
+    const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+    if (d6 >= 0 && d5 <= d6)
+        return cp.norm();
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0)
+        return (p - (a + ac * (d2 / (d2 - d6)))).norm();
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+        return (p - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))))).norm();
+    const double denom = 1.0 / (va + vb + vc);
+    if (!std::isfinite(denom))  // degenerate triangle: nearest of its edges' ends
+        return std::min({ap.norm(), bp.norm(), cp.norm()});
+    return (p - (a + ab * (vb * denom) + ac * (vc * denom))).norm();
+}
+
+ImproveRegion improveRegion(const TetMesh& mesh, const std::vector<int>& seeds, const std::vector<int>& fixedNodes,
+                            int rings) {
+    ImproveRegion region;
+    std::unordered_set<int> inside;
+    std::vector<int> frontier;
+    for (int n : seeds)
+        if (n >= 0 && n < mesh.nodeCount() && !mesh.nodeTets(n).empty() && inside.insert(n).second)
+            frontier.push_back(n);
+    for (int ring = 0; ring < rings; ++ring) {
+        std::vector<int> next;
+        for (int n : frontier)
+            for (int t : mesh.nodeTets(n))
+                for (int v : mesh.tet(t))
+                    if (inside.insert(v).second)
+                        next.push_back(v);
+        frontier = std::move(next);
+    }
+    const std::unordered_set<int> fixed(fixedNodes.begin(), fixedNodes.end());
+    for (int n : inside)
+        if (!fixed.count(n))
+            region.nodes.push_back(n);
+    std::sort(region.nodes.begin(), region.nodes.end());
+    for (int n : region.nodes)
+        region.tets.insert(region.tets.end(), mesh.nodeTets(n).begin(), mesh.nodeTets(n).end());
+    std::sort(region.tets.begin(), region.tets.end());
+    region.tets.erase(std::unique(region.tets.begin(), region.tets.end()), region.tets.end());
+    return region;
+}
+
+namespace {
+
+constexpr int kOmega = -1;  // the virtual vertex that closes the boundary (link condition)
+
+/// The tet q with node v placed at p (reference positions otherwise).
+std::array<Vec3, 4> cornersWith(const TetMesh& m, const Tet& q, int v, const Vec3& p, bool current) {
+    std::array<Vec3, 4> c;
+    for (int i = 0; i < 4; ++i)
+        c[i] = q[i] == v ? p : (current ? m.pos(q[i]) : m.ref(q[i]));
+    return c;
+}
+
+double ratioWith(const TetMesh& m, const Tet& q, int v, const Vec3& p) {
+    const auto c = cornersWith(m, q, v, p, false);
+    return radiusRatio(c[0], c[1], c[2], c[3]);
+}
+
+bool positiveWith(const TetMesh& m, const Tet& q, int v, const Vec3& p, bool current) {
+    const auto c = cornersWith(m, q, v, p, current);
+    return orient3d(c[0], c[1], c[2], c[3]) > 0;
+}
+
+/// Volume of tet q with v at p, and its gradient with respect to p (q must contain v).
+double volumeAndGradient(const TetMesh& m, const Tet& q, int v, const Vec3& p, Vec3& gradient) {
+    // Rotate v to the front by an even permutation (orientation kept).
+    static constexpr int kEven[4][4] = {{0, 1, 2, 3}, {1, 0, 3, 2}, {2, 3, 0, 1}, {3, 2, 1, 0}};
+    int i = 0;
+    while (q[i] != v)
+        ++i;
+    const Vec3& x1 = m.ref(q[kEven[i][1]]);
+    const Vec3& x2 = m.ref(q[kEven[i][2]]);
+    const Vec3& x3 = m.ref(q[kEven[i][3]]);
+    gradient = -(x2 - x1).cross(x3 - x1) / 6.0;
+    return signedVolume(p, x1, x2, x3);
+}
+
+/// Barycentric coordinates of p in tet q (reference positions).
+std::array<double, 4> referenceBarycentric(const TetMesh& m, const Tet& q, const Vec3& p) {
+    const Vec3 &a = m.ref(q[0]), &b = m.ref(q[1]), &c = m.ref(q[2]), &d = m.ref(q[3]);
+    const Vec3 ab = b - a, ac = c - a, ad = d - a, ap = p - a;
+    const double vol = ab.dot(ac.cross(ad));
+    const double w1 = ap.dot(ac.cross(ad)) / vol;
+    const double w2 = ab.dot(ap.cross(ad)) / vol;
+    const double w3 = ab.dot(ac.cross(ap)) / vol;
+    return {1.0 - w1 - w2 - w3, w1, w2, w3};
+}
+
+struct Face {
+    Tri nodes;  ///< outward
+};
+
+class Pass {
+public:
+    Pass(TetMesh& mesh, const ImproveRegion& region, const ImproveOptions& options, ImproveResult& result)
+        : m(mesh), o(options), r(result), editable(region.nodes.begin(), region.nodes.end()),
+          nodes(region.nodes) {}
+
+    void run() {
+        r.worstBefore = worstInRegion();
+        for (int sweep = 0; sweep < o.sweeps; ++sweep) {
+            const int before = r.collapses + r.smoothed;
+            collapseSweep();
+            smoothSweep();
+            if (r.collapses + r.smoothed == before)
+                break;
+        }
+        r.worstAfter = worstInRegion();
+        finish();
+    }
+
+private:
+    TetMesh& m;
+    const ImproveOptions& o;
+    ImproveResult& r;
+    std::unordered_set<int> editable;
+    std::vector<int> nodes;                      ///< the region's nodes (original indices)
+    std::unordered_map<int, int> mergedInto;     ///< collapsed node -> node it merged into
+    std::unordered_set<int> moved, touched;
+    std::vector<int> tetOrigin;                  ///< slot -> tet index at the start (once a tet is removed)
+
+    bool alive(int n) const { return !mergedInto.count(n); }
+
+    bool keptOut(const Vec3& p) const {
+        if (!o.keepOut)
+            return false;
+        const auto& [lo, hi] = *o.keepOut;
+        return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
+    }
+
+    double worstInRegion() const {
+        double worst = 1;
+        for (int n : nodes)
+            if (alive(n))
+                for (int t : m.nodeTets(n)) {
+                    const Tet& q = m.tet(t);
+                    worst = std::min(worst, radiusRatio(m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3])));
+                }
+        return worst;
+    }
+
+    double tetRatio(int t) const {
+        const Tet& q = m.tet(t);
+        return radiusRatio(m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3]));
+    }
+
+    /// Faces of the given tets that contain node x and occur once among them (the boundary of
+    /// x's star when `tets` are all of x's tets), oriented outward.
+    static std::vector<Face> boundaryFacesAt(const std::vector<Tet>& tets, int x) {
+        std::vector<std::pair<Tri, Tri>> all;  // (sorted nodes, oriented face)
+        for (const Tet& q : tets)
+            for (const auto& lf : kTetFaces) {
+                const Tri f{q[lf[0]], q[lf[1]], q[lf[2]]};
+                if (f[0] != x && f[1] != x && f[2] != x)
+                    continue;
+                Tri sorted = f;
+                std::sort(sorted.begin(), sorted.end());
+                all.emplace_back(sorted, f);
+            }
+        std::sort(all.begin(), all.end());
+        std::vector<Face> faces;
+        for (std::size_t i = 0; i < all.size();) {
+            std::size_t j = i + 1;
+            while (j < all.size() && all[j].first == all[i].first)
+                ++j;
+            if (j == i + 1)
+                faces.push_back({all[i].second});
+            i = j;
+        }
+        return faces;
+    }
+
+    std::vector<Tet> starOf(int x) const {
+        std::vector<Tet> star;
+        for (int t : m.nodeTets(x))
+            star.push_back(m.tet(t));
+        return star;
+    }
+
+    double meanEdgeOf(const std::vector<Face>& faces) const {
+        double sum = 0;
+        int count = 0;
+        for (const Face& f : faces)
+            for (int i = 0; i < 3; ++i) {
+                sum += (m.ref(f.nodes[i]) - m.ref(f.nodes[(i + 1) % 3])).norm();
+                ++count;
+            }
+        return count ? sum / count : 0;
+    }
+
+    /// Largest distance of p from the triangles `faces` (reference positions, node x at px).
+    double distanceTo(const Vec3& p, const std::vector<Face>& faces, int x, const Vec3& px) const {
+        double best = std::numeric_limits<double>::infinity();
+        const auto at = [&](int n) -> const Vec3& { return n == x ? px : m.ref(n); };
+        for (const Face& f : faces)
+            best = std::min(best, pointTriangleDistance(p, at(f.nodes[0]), at(f.nodes[1]), at(f.nodes[2])));
+        return best;
+    }
+
+    /// Current position and velocity at reference point p, from the tet of `star` (reference
+    /// positions as they are now) that contains it best.
+    void mapToCurrent(const std::vector<Tet>& star, const Vec3& p, Vec3& pos, Vec3& vel) const {
+        double best = -std::numeric_limits<double>::infinity();
+        for (const Tet& q : star) {
+            const auto w = referenceBarycentric(m, q, p);
+            const double s = std::min({w[0], w[1], w[2], w[3]});
+            if (!(s > best))
+                continue;
+            best = s;
+            pos = Vec3::Zero();
+            vel = Vec3::Zero();
+            for (int i = 0; i < 4; ++i) {
+                pos += w[i] * m.pos(q[i]);
+                vel += w[i] * m.velocities()[q[i]];
+            }
+        }
+    }
+
+    void moveNode(int v, const Vec3& ref, const Vec3& pos, const Vec3& vel) {
+        m.setNodePosition(v, ref, pos);
+        m.velocities()[v] = vel;  // velocities are not recorded by backups: none is open here
+        moved.insert(v);
+        for (int t : m.nodeTets(v))
+            touched.insert(m.tet(t).begin(), m.tet(t).end());
+    }
+
+    // --- link condition (Dey, Edelsbrunner, Guha, Nekhayev), boundary closed by kOmega ---
+    struct Link {
+        std::vector<int> verts;
+        std::vector<std::uint64_t> edges;
+        void finish() {
+            std::sort(verts.begin(), verts.end());
+            verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+            std::sort(edges.begin(), edges.end());
+            edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+        }
+    };
+    static std::uint64_t linkEdge(int a, int b) {
+        if (a > b)
+            std::swap(a, b);
+        return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a + 1)) << 32) |
+               static_cast<std::uint32_t>(b + 1);
+    }
+    Link linkOfNode(int x) const {
+        Link l;
+        const std::vector<Tet> star = starOf(x);
+        for (const Tet& q : star) {
+            int o3[3], k = 0;
+            for (int v : q)
+                if (v != x)
+                    o3[k++] = v;
+            l.verts.insert(l.verts.end(), o3, o3 + 3);
+            l.edges.push_back(linkEdge(o3[0], o3[1]));
+            l.edges.push_back(linkEdge(o3[0], o3[2]));
+            l.edges.push_back(linkEdge(o3[1], o3[2]));
+        }
+        for (const Face& f : boundaryFacesAt(star, x)) {
+            l.verts.push_back(kOmega);
+            for (int v : f.nodes)
+                if (v != x)
+                    l.edges.push_back(linkEdge(kOmega, v));
+        }
+        l.finish();
+        return l;
+    }
+    bool linkCondition(int a, int b) const {
+        const Link la = linkOfNode(a), lb = linkOfNode(b);
+        Link lab;
+        std::vector<Tet> starA = starOf(a);
+        for (const Tet& q : starA) {
+            if (std::find(q.begin(), q.end(), b) == q.end())
+                continue;
+            int o2[2], k = 0;
+            for (int v : q)
+                if (v != a && v != b)
+                    o2[k++] = v;
+            lab.verts.insert(lab.verts.end(), o2, o2 + 2);
+            lab.edges.push_back(linkEdge(o2[0], o2[1]));
+        }
+        for (const Face& f : boundaryFacesAt(starA, a)) {
+            const bool hasB = f.nodes[0] == b || f.nodes[1] == b || f.nodes[2] == b;
+            if (!hasB)
+                continue;
+            lab.verts.push_back(kOmega);
+            for (int v : f.nodes)
+                if (v != a && v != b)
+                    lab.edges.push_back(linkEdge(kOmega, v));
+        }
+        lab.finish();
+        std::vector<int> commonVerts;
+        std::set_intersection(la.verts.begin(), la.verts.end(), lb.verts.begin(), lb.verts.end(),
+                              std::back_inserter(commonVerts));
+        if (commonVerts != lab.verts)
+            return false;
+        std::vector<std::uint64_t> commonEdges;
+        std::set_intersection(la.edges.begin(), la.edges.end(), lb.edges.begin(), lb.edges.end(),
+                              std::back_inserter(commonEdges));
+        return commonEdges == lab.edges;
+    }
+
+    // --- edge collapse ---
+
+    /// The point of the triangles `faces` (reference positions) nearest to p0 where
+    /// g . (p - p0) = delta; none if no face reaches that level.
+    std::optional<Vec3> onBoundaryWithVolume(const std::vector<Face>& faces, const Vec3& g, const Vec3& p0,
+                                             double delta) const {
+        std::optional<Vec3> best;
+        double bestDistance = std::numeric_limits<double>::infinity();
+        const double level = g.dot(p0) + delta;
+        const auto consider = [&](const Vec3& p) {
+            const double dist = (p - p0).squaredNorm();
+            if (dist < bestDistance) {
+                bestDistance = dist;
+                best = p;
+            }
+        };
+        for (const Face& f : faces) {
+            const Vec3 c[3] = {m.ref(f.nodes[0]), m.ref(f.nodes[1]), m.ref(f.nodes[2])};
+            const double h[3] = {g.dot(c[0]) - level, g.dot(c[1]) - level, g.dot(c[2]) - level};
+            // The level line crosses the triangle where h changes sign: a segment between two
+            // edge points (or a corner on the level).
+            Vec3 ends[3];
+            int count = 0;
+            for (int i = 0; i < 3; ++i) {
+                const int j = (i + 1) % 3;
+                if (h[i] == 0)
+                    ends[count++] = c[i];
+                else if ((h[i] < 0) != (h[j] < 0) && h[j] != 0)
+                    ends[count++] = c[i] + (c[j] - c[i]) * (h[i] / (h[i] - h[j]));
+                if (count == 2)
+                    break;
+            }
+            if (count == 1)
+                consider(ends[0]);
+            else if (count == 2) {
+                // Nearest point to p0 on the segment.
+                const Vec3 d = ends[1] - ends[0];
+                const double len2 = d.squaredNorm();
+                const double t = len2 > 0 ? std::clamp((p0 - ends[0]).dot(d) / len2, 0.0, 1.0) : 0.0;
+                consider(ends[0] + t * d);
+            }
+        }
+        return best;
+    }
+
+    struct Placement {
+        Vec3 ref = Vec3::Zero(), pos = Vec3::Zero(), vel = Vec3::Zero();
+        double worst = -1;
+    };
+
+    /// Collapses edge (a, b) into a (b disappears) if a placement is allowed (see the header).
+    bool tryCollapse(int a, int b, bool isShort) {
+        if (!editable.count(a) || !editable.count(b) || !alive(a) || !alive(b))
+            return false;
+        std::vector<int> tetsA(m.nodeTets(a).begin(), m.nodeTets(a).end());
+        std::vector<int> tetsB(m.nodeTets(b).begin(), m.nodeTets(b).end());
+        std::vector<int> shell;
+        for (int t : tetsA)
+            if (std::find(tetsB.begin(), tetsB.end(), t) != tetsB.end())
+                shell.push_back(t);
+        if (shell.empty() || !linkCondition(a, b))
+            return false;
+        // The union of both stars before, and the tets that remain, with b -> a.
+        std::vector<Tet> before, after;
+        double volumeBefore = 0, worstBefore = 1;
+        for (int t : tetsA) {
+            before.push_back(m.tet(t));
+            volumeBefore += m.referenceVolume(t);
+            worstBefore = std::min(worstBefore, tetRatio(t));
+            if (std::find(shell.begin(), shell.end(), t) == shell.end())
+                after.push_back(m.tet(t));
+        }
+        for (int t : tetsB)
+            if (std::find(shell.begin(), shell.end(), t) == shell.end()) {
+                before.push_back(m.tet(t));
+                volumeBefore += m.referenceVolume(t);
+                worstBefore = std::min(worstBefore, tetRatio(t));
+                Tet q = m.tet(t);
+                for (int& v : q)
+                    if (v == b)
+                        v = a;
+                after.push_back(q);
+            }
+        // Old boundary around a and b (for the deviation checks).
+        std::vector<Face> oldBoundary = boundaryFacesAt(before, a);
+        const bool boundaryA = !oldBoundary.empty();
+        const std::vector<Face> facesB = boundaryFacesAt(before, b);
+        const bool boundaryB = !facesB.empty();
+        oldBoundary.insert(oldBoundary.end(), facesB.begin(), facesB.end());
+        const bool boundary = boundaryA || boundaryB;
+        const double tolerance = o.maxDeviation * meanEdgeOf(oldBoundary);
+
+        Placement best;
+        const Vec3 pa = m.ref(a), pb = m.ref(b);
+        // Candidates: either end or the midpoint; on the boundary only those on the old
+        // boundary (an end on it, the midpoint of a boundary edge).
+        bool edgeOnBoundary = false;
+        for (const Face& f : oldBoundary) {
+            const bool hasA = std::find(f.nodes.begin(), f.nodes.end(), a) != f.nodes.end();
+            const bool hasB = std::find(f.nodes.begin(), f.nodes.end(), b) != f.nodes.end();
+            edgeOnBoundary = edgeOnBoundary || (hasA && hasB);
+        }
+        std::vector<Vec3> starts;
+        if (!boundary || boundaryA)
+            starts.push_back(pa);
+        if (!boundary || boundaryB)
+            starts.push_back(pb);
+        if (!boundary || edgeOnBoundary)
+            starts.push_back(0.5 * (pa + pb));
+        for (const Vec3& p0 : starts) {
+            // The volume of `after` is affine in the merged node's position, with gradient g.
+            // On the boundary, the node goes to the point of the old boundary nearest to p0
+            // where the volume is what it was: it stays on the body's surface (or the cut
+            // surface) and the volume is kept. Inside the mesh the stars fill the same space
+            // wherever the node is: nothing to correct.
+            double volume = 0;
+            Vec3 gradient = Vec3::Zero();
+            for (const Tet& q : after) {
+                Vec3 g;
+                volume += volumeAndGradient(m, q, a, p0, g);
+                gradient += g;
+            }
+            Vec3 p = p0;
+            const double scale = std::abs(volumeBefore) + 1e-300;
+            bool offSurface = false;
+            if (boundary && std::abs(volumeBefore - volume) > 1e-15 * scale) {
+                const std::optional<Vec3> q = onBoundaryWithVolume(oldBoundary, gradient, p0, volumeBefore - volume);
+                if (q) {
+                    p = *q;
+                } else if (!o.offSurface) {
+                    continue;
+                } else {
+                    // No point of the old boundary has the volume: along the gradient, within
+                    // maxDeviation of the old boundary (checked below).
+                    p = p0 + gradient * ((volumeBefore - volume) / gradient.squaredNorm());
+                    offSurface = true;
+                }
+            }
+            if (!p.allFinite() || keptOut(p))
+                continue;
+            bool ok = true;
+            double worst = 1;
+            for (const Tet& q : after) {
+                if (!positiveWith(m, q, a, p, false)) {
+                    ok = false;
+                    break;
+                }
+                worst = std::min(worst, ratioWith(m, q, a, p));
+            }
+            if (!ok || worst <= best.worst)
+                continue;
+            if (boundary) {
+                // The nodes that were on the boundary stay near the new one.
+                const std::vector<Face> newBoundary = boundaryFacesAt(after, a);
+                if ((offSurface && distanceTo(p, oldBoundary, -2, Vec3::Zero()) > tolerance) || (boundaryA && distanceTo(pa, newBoundary, a, p) > tolerance) ||
+                    (boundaryB && distanceTo(pb, newBoundary, a, p) > tolerance))
+                    continue;
+            }
+            Placement cand;
+            cand.ref = p;
+            mapToCurrent(before, p, cand.pos, cand.vel);
+            for (const Tet& q : after)
+                if (!positiveWith(m, q, a, cand.pos, true)) {
+                    ok = false;
+                    break;
+                }
+            if (!ok)
+                continue;
+            cand.worst = worst;
+            best = cand;
+        }
+        if (best.worst < 0)
+            return false;
+        const bool accept = isShort ? best.worst >= std::min(o.badRatio, worstBefore) : best.worst > worstBefore;
+        if (!accept)
+            return false;
+        applyCollapse(a, b, shell, tetsB, best);
+        return true;
+    }
+
+    void removeTet(int t) {
+        if (tetOrigin.empty()) {
+            tetOrigin.resize(m.tetCount());
+            std::iota(tetOrigin.begin(), tetOrigin.end(), 0);
+        }
+        tetOrigin[t] = tetOrigin.back();
+        tetOrigin.pop_back();
+        m.removeTet(t);
+        ++r.removedTets;
+    }
+
+    void applyCollapse(int a, int b, std::vector<int> shell, const std::vector<int>& tetsB, const Placement& at) {
+        for (int t : tetsB)
+            if (std::find(shell.begin(), shell.end(), t) == shell.end()) {
+                Tet q = m.tet(t);
+                for (int& v : q)
+                    if (v == b)
+                        v = a;
+                m.replaceTet(t, q);
+            }
+        // Highest first: the last tet, which takes a freed slot, is then never in the shell.
+        std::sort(shell.rbegin(), shell.rend());
+        for (int t : shell)
+            touched.insert(m.tet(t).begin(), m.tet(t).end());
+        for (int t : shell)
+            removeTet(t);
+        mergedInto[b] = a;
+        moved.erase(b);
+        touched.erase(b);
+        moveNode(a, at.ref, at.pos, at.vel);
+        ++r.collapses;
+    }
+
+    void collapseSweep() {
+        struct Candidate {
+            double length;
+            int a, b;
+            bool isShort;
+        };
+        std::vector<Candidate> candidates;
+        std::unordered_set<std::uint64_t> seen;
+        for (int n : nodes) {
+            if (!alive(n))
+                continue;
+            for (int t : m.nodeTets(n)) {
+                const Tet& q = m.tet(t);
+                const bool bad = tetRatio(t) < o.badRatio;
+                for (const auto& e : kTetEdges) {
+                    const int a = q[e[0]], b = q[e[1]];
+                    if (!editable.count(a) || !editable.count(b))
+                        continue;
+                    const double length = (m.ref(a) - m.ref(b)).norm();
+                    const bool isShort = length < o.shortEdge;
+                    if ((isShort || bad) && seen.insert(linkEdge(a, b)).second)
+                        candidates.push_back({length, std::min(a, b), std::max(a, b), isShort});
+                }
+            }
+        }
+        std::sort(candidates.begin(), candidates.end(),
+                  [](const Candidate& x, const Candidate& y) { return x.length < y.length; });
+        for (const Candidate& c : candidates) {
+            if (!alive(c.a) || !alive(c.b))
+                continue;
+            tryCollapse(c.a, c.b, c.isShort);
+        }
+    }
+
+    // --- smoothing ---
+    double worstAround(const std::vector<Tet>& star, int v, const Vec3& p, int* worstIndex = nullptr) const {
+        double worst = 2;
+        for (std::size_t i = 0; i < star.size(); ++i) {
+            const double q = ratioWith(m, star[i], v, p);
+            if (q < worst) {
+                worst = q;
+                if (worstIndex)
+                    *worstIndex = static_cast<int>(i);
+            }
+        }
+        return worst;
+    }
+
+    bool allPositive(const std::vector<Tet>& star, int v, const Vec3& p) const {
+        for (const Tet& q : star)
+            if (!positiveWith(m, q, v, p, false))
+                return false;
+        return true;
+    }
+
+    bool smoothNode(int v) {
+        const std::vector<Tet> star = starOf(v);
+        if (star.empty())
+            return false;
+        const Vec3 x0 = m.ref(v);
+        // The node's score: its worst tet against badRatio and its shortest edge against
+        // shortEdge, the smaller of the two (1: nothing to improve).
+        std::vector<int> neighbours;
+        for (const Tet& q : star)
+            for (int u : q)
+                if (u != v)
+                    neighbours.push_back(u);
+        std::sort(neighbours.begin(), neighbours.end());
+        neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+        const auto score = [&](const Vec3& p, Vec3* ascent) {
+            int wi = 0;
+            const double ratio = o.badRatio > 0 ? worstAround(star, v, p, &wi) / o.badRatio : 2.0;
+            double edge = 2.0;
+            int nearest = -1;
+            if (o.shortEdge > 0)
+                for (int u : neighbours)
+                    if (const double l = (p - m.ref(u)).norm() / o.shortEdge; l < edge) {
+                        edge = l;
+                        nearest = u;
+                    }
+            if (ascent) {
+                if (ratio <= edge) {
+                    // Gradient of the worst tet's ratio (central differences).
+                    const double h = 1e-4 * (m.ref(star[wi][0]) - m.ref(star[wi][1])).norm();
+                    for (int k = 0; k < 3; ++k) {
+                        Vec3 e = Vec3::Zero();
+                        e[k] = h;
+                        (*ascent)[k] = ratioWith(m, star[wi], v, p + e) - ratioWith(m, star[wi], v, p - e);
+                    }
+                } else {
+                    *ascent = p - m.ref(nearest);  // lengthen the shortest edge
+                }
+            }
+            return std::min({ratio, edge, 1.0});
+        };
+        double worst = score(x0, nullptr);
+        if (worst >= 1)
+            return false;
+        const std::vector<Face> faces = boundaryFacesAt(star, v);
+        const bool boundary = !faces.empty();
+        Vec3 gradient = Vec3::Zero();  // of the volume of the star, in the node's position
+        double tolerance = 0;
+        if (boundary) {
+            for (const Tet& q : star) {
+                Vec3 g;
+                volumeAndGradient(m, q, v, x0, g);
+                gradient += g;
+            }
+            if (!(gradient.norm() > 0))
+                return false;
+            tolerance = o.maxDeviation * meanEdgeOf(faces);
+        }
+        const Vec3 normal = boundary ? Vec3(gradient.normalized()) : Vec3::Zero();
+        double shortest = std::numeric_limits<double>::infinity();
+        for (const Tet& q : star)
+            for (const auto& e : kTetEdges)
+                shortest = std::min(shortest, (m.ref(q[e[0]]) - m.ref(q[e[1]])).norm());
+        // Where a trial position p puts the node: p itself inside the mesh; on the boundary,
+        // the point of the old boundary nearest to p where the volume is what it was (the node
+        // stays on the body's surface or the cut surface; the volume is kept).
+        const auto place = [&](const Vec3& p) -> std::optional<Vec3> {
+            std::optional<Vec3> at = p;
+            if (boundary) {
+                // (p is across the volume gradient from x0: it keeps the volume too, a little
+                // off the boundary where it is curved.)
+                at = onBoundaryWithVolume(faces, gradient, p, gradient.dot(x0 - p));
+                if (!at && o.offSurface && distanceTo(p, faces, v, x0) <= tolerance)
+                    at = p;
+            }
+            if (!at || keptOut(*at) || !allPositive(star, v, *at))
+                return std::nullopt;
+            if (boundary && distanceTo(x0, faces, v, *at) > tolerance)
+                return std::nullopt;
+            return at;
+        };
+        Vec3 x = x0;
+        if (!boundary) {
+            // The neighbours' centroid first (Laplacian smoothing), kept only if it helps.
+            Vec3 centroid = Vec3::Zero();
+            int count = 0;
+            for (const Tet& q : star)
+                for (int u : q)
+                    if (u != v) {
+                        centroid += m.ref(u);
+                        ++count;
+                    }
+            centroid /= count;
+            const double q = score(centroid, nullptr);
+            if (q > worst && place(centroid)) {
+                x = centroid;
+                worst = q;
+            }
+        }
+        for (int iteration = 0; iteration < 40; ++iteration) {
+            Vec3 d = Vec3::Zero();
+            worst = score(x, &d);
+            if (worst >= 1)
+                break;
+            if (boundary)
+                d -= d.dot(normal) * normal;
+            const double norm = d.norm();
+            if (!(norm > 0))
+                break;
+            d /= norm;
+            bool stepped = false;
+            for (double step = 0.5 * shortest; step > 1e-3 * shortest; step *= 0.5) {
+                const std::optional<Vec3> p = place(x + step * d);
+                if (!p)
+                    continue;
+                const double q = score(*p, nullptr);
+                if (q > worst + 1e-12) {
+                    x = *p;
+                    stepped = true;
+                    break;
+                }
+            }
+            if (!stepped)
+                break;
+        }
+        if (x == x0)
+            return false;
+        Vec3 pos = m.pos(v), vel = m.velocities()[v];
+        mapToCurrent(star, x, pos, vel);
+        for (const Tet& q : star)
+            if (!positiveWith(m, q, v, pos, true))
+                return false;
+        moveNode(v, x, pos, vel);
+        ++r.smoothed;
+        return true;
+    }
+
+    void smoothSweep() {
+        for (int n : nodes)
+            if (alive(n))
+                smoothNode(n);
+    }
+
+    // --- the end: removed nodes leave, the renumbering, masses ---
+    void finish() {
+        std::vector<int> dead;
+        for (const auto& [n, into] : mergedInto)
+            dead.push_back(n);
+        const bool renumber = !tetOrigin.empty() || !dead.empty();
+        std::vector<int> nodeOrigin;
+        if (renumber) {
+            nodeOrigin.resize(m.nodeCount());
+            std::iota(nodeOrigin.begin(), nodeOrigin.end(), 0);
+            std::sort(dead.rbegin(), dead.rend());
+            for (int n : dead) {
+                nodeOrigin[n] = nodeOrigin.back();
+                nodeOrigin.pop_back();
+                m.removeNode(n);
+                ++r.removedNodes;
+            }
+            const int nodesBefore = static_cast<int>(nodeOrigin.size()) + static_cast<int>(dead.size());
+            r.newNode.assign(nodesBefore, -1);
+            for (int s = 0; s < static_cast<int>(nodeOrigin.size()); ++s)
+                r.newNode[nodeOrigin[s]] = s;
+            for (int n : dead) {
+                int into = n;
+                while (mergedInto.count(into))
+                    into = mergedInto.at(into);
+                r.newNode[n] = r.newNode[into];
+            }
+            if (tetOrigin.empty()) {
+                tetOrigin.resize(m.tetCount());
+                std::iota(tetOrigin.begin(), tetOrigin.end(), 0);
+            }
+            r.newTet.assign(m.tetCount() + r.removedTets, -1);
+            for (int s = 0; s < static_cast<int>(tetOrigin.size()); ++s)
+                r.newTet[tetOrigin[s]] = s;
+        }
+        const auto map = [&](int n) { return renumber ? r.newNode[n] : n; };
+        for (int n : moved)
+            r.movedNodes.push_back(map(n));
+        for (int n : touched)
+            if (alive(n))
+                r.touchedNodes.push_back(map(n));
+        std::sort(r.movedNodes.begin(), r.movedNodes.end());
+        r.movedNodes.erase(std::unique(r.movedNodes.begin(), r.movedNodes.end()), r.movedNodes.end());
+        std::sort(r.touchedNodes.begin(), r.touchedNodes.end());
+        r.touchedNodes.erase(std::unique(r.touchedNodes.begin(), r.touchedNodes.end()), r.touchedNodes.end());
+        updateMasses(m, r.touchedNodes, o.density);
+    }
+};
+
+} // namespace
+
+ImproveResult improveMesh(TetMesh& mesh, const ImproveRegion& region, const ImproveOptions& options) {
+    ImproveResult result;
+    if (region.nodes.empty() || (options.badRatio <= 0 && options.shortEdge <= 0) || options.sweeps <= 0)
+        return result;
+    Pass(mesh, region, options, result).run();
+    return result;
+}
+
+} // namespace resect
