@@ -215,6 +215,8 @@ Status validateCutOptions(const CutOptions& o) {
         return Status::error(range("improveQuality", 0, CutLimits::kMaxImproveQuality, o.improveQuality));
     if (!(o.improveShortEdge >= 0) || o.improveShortEdge > CutLimits::kMaxImproveShortEdge)
         return Status::error(range("improveShortEdge", 0, CutLimits::kMaxImproveShortEdge, o.improveShortEdge));
+    if (!(o.improveCoarsen >= 0) || o.improveCoarsen > CutLimits::kMaxImproveCoarsen)
+        return Status::error(range("improveCoarsen", 0, CutLimits::kMaxImproveCoarsen, o.improveCoarsen));
     if (!(o.minEdgeFraction > 0) || o.minEdgeFraction > CutLimits::kMaxMinEdgeFraction)
         return Status::error(range("minEdgeFraction", 0, CutLimits::kMaxMinEdgeFraction, o.minEdgeFraction, true));
     if (!(o.snapQualityFloor >= 0) || o.snapQualityFloor > 1)

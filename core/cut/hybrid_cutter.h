@@ -31,6 +31,7 @@ struct CutLimits {
     static constexpr int kMaxRelaxRings = 5;              ///< relaxRings in [1, this]
     static constexpr double kMaxImproveQuality = 4;       ///< improveQuality in [0, this]
     static constexpr double kMaxImproveShortEdge = 4;     ///< improveShortEdge in [0, this]
+    static constexpr double kMaxImproveCoarsen = 1;       ///< improveCoarsen in [0, this]
 };
 
 struct CutOptions {
@@ -57,14 +58,18 @@ struct CutOptions {
     /// Density (g/mm^3, > 0) for the masses of Eq. 3, updated for every node whose tets
     /// changed. Tissue::cut uses its material's density instead.
     double density = Material{}.density;
-    /// Local mesh improvement after the cut (Tissue::cut, core/cut/improve_mesh.h): tets whose
-    /// radius ratio is below improveQuality times the tissue's worst as created are improved,
-    /// and edges shorter than improveShortEdge times its shortest as created are collapsed, in
-    /// the cut's neighbourhood. Dimensionless, in [0, CutLimits::kMaxImproveQuality] and [0,
-    /// CutLimits::kMaxImproveShortEdge]; improve = false turns the step off.
+    /// Local mesh improvement after the cut (Tissue::cut, core/cut/improve_mesh.h), in the
+    /// cut's neighbourhood: tets whose radius ratio is below improveQuality times the tissue's
+    /// worst as created are improved, edges shorter than improveShortEdge times its shortest
+    /// as created are collapsed, and edges shorter than improveCoarsen times its mean edge
+    /// (the unit of d) are collapsed where quality allows, so that repeated cuts do not keep
+    /// adding tets. Dimensionless, in [0, CutLimits::kMaxImproveQuality], [0,
+    /// CutLimits::kMaxImproveShortEdge] and [0, CutLimits::kMaxImproveCoarsen] (0: off);
+    /// improve = false turns the step off.
     bool improve = true;
     double improveQuality = 1.0;
-    double improveShortEdge = 0.5;
+    double improveShortEdge = 0.6;
+    double improveCoarsen = 0.5;
     /// Smallest fraction of an edge a split may cut off (see select_cut_nodes.h); in
     /// (0, CutLimits::kMaxMinEdgeFraction].
     double minEdgeFraction = 1e-6;

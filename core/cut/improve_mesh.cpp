@@ -61,11 +61,12 @@ ImproveRegion improveRegion(const TetMesh& mesh, const std::vector<int>& seeds, 
     }
     const std::unordered_set<int> fixed(fixedNodes.begin(), fixedNodes.end());
     for (int n : inside)
-        if (!fixed.count(n))
-            region.nodes.push_back(n);
+        (fixed.count(n) ? region.fixed : region.nodes).push_back(n);
     std::sort(region.nodes.begin(), region.nodes.end());
-    for (int n : region.nodes)
-        region.tets.insert(region.tets.end(), mesh.nodeTets(n).begin(), mesh.nodeTets(n).end());
+    std::sort(region.fixed.begin(), region.fixed.end());
+    for (const auto* list : {&region.nodes, &region.fixed})
+        for (int n : *list)
+            region.tets.insert(region.tets.end(), mesh.nodeTets(n).begin(), mesh.nodeTets(n).end());
     std::sort(region.tets.begin(), region.tets.end());
     region.tets.erase(std::unique(region.tets.begin(), region.tets.end()), region.tets.end());
     return region;
@@ -126,15 +127,20 @@ class Pass {
 public:
     Pass(TetMesh& mesh, const ImproveRegion& region, const ImproveOptions& options, ImproveResult& result)
         : m(mesh), o(options), r(result), editable(region.nodes.begin(), region.nodes.end()),
-          nodes(region.nodes) {}
+          nodes(region.nodes), tetsAtStart(mesh.tetCount()) {
+        flippable = editable;
+        flippable.insert(region.fixed.begin(), region.fixed.end());
+        fixedInRegion = region.fixed;
+    }
 
     void run() {
         r.worstBefore = worstInRegion();
         for (int sweep = 0; sweep < o.sweeps; ++sweep) {
-            const int before = r.collapses + r.smoothed;
+            const int before = r.collapses + r.smoothed + r.flips;
             collapseSweep();
+            flipSweep();
             smoothSweep();
-            if (r.collapses + r.smoothed == before)
+            if (r.collapses + r.smoothed + r.flips == before)
                 break;
         }
         r.worstAfter = worstInRegion();
@@ -145,11 +151,14 @@ private:
     TetMesh& m;
     const ImproveOptions& o;
     ImproveResult& r;
-    std::unordered_set<int> editable;
+    std::unordered_set<int> editable;   ///< nodes that may move or merge
+    std::unordered_set<int> flippable;  ///< nodes whose tets may be flipped (also the fixed ones: flips move no node)
     std::vector<int> nodes;                      ///< the region's nodes (original indices)
+    std::vector<int> fixedInRegion;
     std::unordered_map<int, int> mergedInto;     ///< collapsed node -> node it merged into
     std::unordered_set<int> moved, touched;
-    std::vector<int> tetOrigin;                  ///< slot -> tet index at the start (once a tet is removed)
+    std::vector<int> tetOrigin;                  ///< slot -> tet index at the start, -1 for new tets (once tets change)
+    int tetsAtStart = 0;
 
     bool alive(int n) const { return !mergedInto.count(n); }
 
@@ -381,7 +390,7 @@ private:
     };
 
     /// Collapses edge (a, b) into a (b disappears) if a placement is allowed (see the header).
-    bool tryCollapse(int a, int b, bool isShort) {
+    bool tryCollapse(int a, int b, bool isShort, bool coarsen = false) {
         if (!editable.count(a) || !editable.count(b) || !alive(a) || !alive(b))
             return false;
         std::vector<int> tetsA(m.nodeTets(a).begin(), m.nodeTets(a).end());
@@ -459,8 +468,8 @@ private:
                 const std::optional<Vec3> q = onBoundaryWithVolume(oldBoundary, gradient, p0, volumeBefore - volume);
                 if (q) {
                     p = *q;
-                } else if (!o.offSurface) {
-                    continue;
+                } else if (!o.offSurface || (coarsen && !isShort)) {
+                    continue;  // (coarsening, being optional, keeps to the old boundary)
                 } else {
                     // No point of the old boundary has the volume: along the gradient, within
                     // maxDeviation of the old boundary (checked below).
@@ -470,6 +479,16 @@ private:
             }
             if (!p.allFinite() || keptOut(p))
                 continue;
+            if (o.maxEdge > 0 && !isShort) {
+                // Coarsening stops where edges would grow too long.
+                double longest = 0;
+                for (const Tet& q : after)
+                    for (int v : q)
+                        if (v != a)
+                            longest = std::max(longest, (m.ref(v) - p).norm());
+                if (longest > o.maxEdge)
+                    continue;
+            }
             bool ok = true;
             double worst = 1;
             for (const Tet& q : after) {
@@ -503,18 +522,25 @@ private:
         }
         if (best.worst < 0)
             return false;
-        const bool accept = isShort ? best.worst >= std::min(o.badRatio, worstBefore) : best.worst > worstBefore;
+        // An edge below floorEdge goes even if the tets around it get worse, down to floorRatio.
+        const bool critical = isShort && (pa - pb).norm() < o.floorEdge && best.worst >= o.floorRatio;
+        const bool accept = isShort || coarsen ? best.worst >= std::min(o.badRatio, worstBefore) || critical
+                                               : best.worst > worstBefore;
         if (!accept)
             return false;
         applyCollapse(a, b, shell, tetsB, best);
         return true;
     }
 
-    void removeTet(int t) {
+    void trackTets() {
         if (tetOrigin.empty()) {
             tetOrigin.resize(m.tetCount());
             std::iota(tetOrigin.begin(), tetOrigin.end(), 0);
         }
+    }
+
+    void removeTet(int t) {
+        trackTets();
         tetOrigin[t] = tetOrigin.back();
         tetOrigin.pop_back();
         m.removeTet(t);
@@ -547,7 +573,7 @@ private:
         struct Candidate {
             double length;
             int a, b;
-            bool isShort;
+            bool isShort, coarsen;
         };
         std::vector<Candidate> candidates;
         std::unordered_set<std::uint64_t> seen;
@@ -563,8 +589,9 @@ private:
                         continue;
                     const double length = (m.ref(a) - m.ref(b)).norm();
                     const bool isShort = length < o.shortEdge;
-                    if ((isShort || bad) && seen.insert(linkEdge(a, b)).second)
-                        candidates.push_back({length, std::min(a, b), std::max(a, b), isShort});
+                    const bool coarsen = length < o.coarsenEdge;
+                    if ((isShort || coarsen || bad) && seen.insert(linkEdge(a, b)).second)
+                        candidates.push_back({length, std::min(a, b), std::max(a, b), isShort, coarsen});
                 }
             }
         }
@@ -573,7 +600,262 @@ private:
         for (const Candidate& c : candidates) {
             if (!alive(c.a) || !alive(c.b))
                 continue;
-            tryCollapse(c.a, c.b, c.isShort);
+            tryCollapse(c.a, c.b, c.isShort, c.coarsen);
+        }
+    }
+
+    // --- flips (2-3 and 3-2): the tets change, the nodes stay; the union of the tets, and so
+    // the boundary and the volume, is the same before and after ---
+
+    /// The tet with these nodes (any order), or -1.
+    int findTet(const Tet& nodes) const {
+        for (int t : m.nodeTets(nodes[0])) {
+            const Tet& q = m.tet(t);
+            bool all = true;
+            for (int v : nodes)
+                all = all && std::find(q.begin(), q.end(), v) != q.end();
+            if (all)
+                return t;
+        }
+        return -1;
+    }
+
+    bool editableTet(const Tet& q) const {
+        for (int v : q)
+            if (!flippable.count(v) || !alive(v))
+                return false;
+        return true;
+    }
+
+    /// q with node `from` replaced by `to`.
+    static Tet replaced(Tet q, int from, int to) {
+        for (int& v : q)
+            if (v == from)
+                v = to;
+        return q;
+    }
+
+    /// The new tets are allowed: positive in both configurations (exact), and better than the
+    /// old ones' worst.
+    bool better(const std::vector<Tet>& created, double worstOld) const {
+        double worst = 1;
+        for (const Tet& q : created) {
+            if (orient3d(m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3])) <= 0 ||
+                orient3d(m.pos(q[0]), m.pos(q[1]), m.pos(q[2]), m.pos(q[3])) <= 0)
+                return false;
+            worst = std::min(worst, radiusRatio(m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3])));
+        }
+        return worst > worstOld * (1 + 1e-9) + 1e-12;
+    }
+
+    void replaceTets(const std::vector<int>& old, const std::vector<Tet>& created) {
+        trackTets();
+        for (const Tet& q : created)
+            touched.insert(q.begin(), q.end());
+        std::vector<int> slots = old;
+        std::sort(slots.rbegin(), slots.rend());  // highest first (removal moves the last tet)
+        const std::size_t common = std::min(slots.size(), created.size());
+        for (std::size_t i = 0; i < common; ++i) {
+            m.replaceTet(slots[i], created[i]);
+            tetOrigin[slots[i]] = -1;
+        }
+        for (std::size_t i = common; i < created.size(); ++i) {
+            m.addTet(created[i]);
+            tetOrigin.push_back(-1);
+        }
+        for (std::size_t i = common; i < slots.size(); ++i)
+            removeTet(slots[i]);
+        ++r.flips;
+    }
+
+    /// 2-3 flip of the face of tet t opposite its corner `apexIndex`, if that face is shared.
+    bool tryFlip23(int t, int apexIndex) {
+        const Tet q1 = m.tet(t);
+        const int d = q1[apexIndex];
+        Tet face = q1;
+        int t2 = -1, e = -1;
+        // The other tet with the face's three nodes.
+        const int a = q1[(apexIndex + 1) % 4], b = q1[(apexIndex + 2) % 4], c = q1[(apexIndex + 3) % 4];
+        for (int u : m.nodeTets(a)) {
+            if (u == t)
+                continue;
+            const Tet& q = m.tet(u);
+            if (std::find(q.begin(), q.end(), b) != q.end() && std::find(q.begin(), q.end(), c) != q.end()) {
+                t2 = u;
+                for (int v : q)
+                    if (v != a && v != b && v != c)
+                        e = v;
+                break;
+            }
+        }
+        (void)face;
+        if (t2 < 0 || e < 0 || !editableTet(m.tet(t2)))
+            return false;
+        // The new edge d-e must not exist already.
+        for (int u : m.nodeTets(d)) {
+            const Tet& q = m.tet(u);
+            if (std::find(q.begin(), q.end(), e) != q.end())
+                return false;
+        }
+        const double worstOld = std::min(tetRatio(t), tetRatio(t2));
+        const std::vector<Tet> created{replaced(q1, a, e), replaced(q1, b, e), replaced(q1, c, e)};
+        if (!better(created, worstOld))
+            return false;
+        replaceTets({t, t2}, created);
+        return true;
+    }
+
+    /// Edge removal (Shewchuk; the 3-2 flip for three tets): the n tets (3 <= n <= 7) around
+    /// the interior edge (p, q), whose other nodes form a closed ring, are replaced by the
+    /// 2 (n - 2) tets joining p and q to the triangles of the ring polygon's best triangulation
+    /// (dynamic programming over the triangulations for the largest smallest radius ratio).
+    bool tryEdgeRemoval(int p, int q) {
+        std::vector<int> ring;
+        for (int u : m.nodeTets(p)) {
+            const Tet& x = m.tet(u);
+            if (std::find(x.begin(), x.end(), q) != x.end())
+                ring.push_back(u);
+        }
+        const int n = static_cast<int>(ring.size());
+        if (n < 3 || n > 7)
+            return false;
+        // The ring of other nodes, in order: each ring tet holds two consecutive ones.
+        std::vector<std::array<int, 2>> pairs;
+        for (int u : ring) {
+            if (!editableTet(m.tet(u)))
+                return false;
+            std::array<int, 2> pr{-1, -1};
+            int k = 0;
+            for (int v : m.tet(u))
+                if (v != p && v != q)
+                    pr[k++] = v;
+            pairs.push_back(pr);
+        }
+        std::vector<int> polygon{pairs[0][0], pairs[0][1]};
+        std::vector<char> used(n, 0);
+        used[0] = 1;
+        for (int step = 1; step < n; ++step) {
+            const int last = polygon.back();
+            int next = -1;
+            for (int i = 0; i < n && next < 0; ++i)
+                if (!used[i] && (pairs[i][0] == last || pairs[i][1] == last)) {
+                    used[i] = 1;
+                    next = pairs[i][0] == last ? pairs[i][1] : pairs[i][0];
+                }
+            if (next < 0)
+                return false;  // an open ring: the edge is on the boundary
+            polygon.push_back(next);
+        }
+        if (polygon.back() != polygon.front())
+            return false;
+        polygon.pop_back();
+        {
+            std::vector<int> sorted = polygon;
+            std::sort(sorted.begin(), sorted.end());
+            if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+                return false;
+        }
+        // Orientation: with orient3d(p, q, v0, v1) < 0, the new tets (vi, vj, vk, p) and
+        // (vj, vi, vk, q) are positive for i < j < k.
+        if (orient3d(m.ref(p), m.ref(q), m.ref(polygon[0]), m.ref(polygon[1])) > 0)
+            std::reverse(polygon.begin(), polygon.end());
+        const auto connected = [&](int u, int v) {
+            for (int t : m.nodeTets(u)) {
+                const Tet& x = m.tet(t);
+                if (std::find(x.begin(), x.end(), v) != x.end())
+                    return true;
+            }
+            return false;
+        };
+        const auto faceExists = [&](int u, int v, int w) {
+            for (int t : m.nodeTets(u)) {
+                const Tet& x = m.tet(t);
+                if (std::find(x.begin(), x.end(), v) != x.end() && std::find(x.begin(), x.end(), w) != x.end())
+                    return true;
+            }
+            return false;
+        };
+        constexpr double kInvalid = -1;
+        const auto quality = [&](int i, int j, int k) {
+            const int vi = polygon[i], vj = polygon[j], vk = polygon[k];
+            // Diagonals (not ring edges) must be new, and so must the triangle.
+            const auto diagonal = [&](int x, int y) { return (y - x) != 1 && !(x == 0 && y == n - 1); };
+            if ((diagonal(i, j) && connected(vi, vj)) || (diagonal(j, k) && connected(vj, vk)) ||
+                (diagonal(i, k) && connected(vi, vk)) || faceExists(vi, vj, vk))
+                return kInvalid;
+            const Tet up{vi, vj, vk, p}, down{vj, vi, vk, q};
+            double worst = 1;
+            for (const Tet& x : {up, down}) {
+                if (orient3d(m.ref(x[0]), m.ref(x[1]), m.ref(x[2]), m.ref(x[3])) <= 0 ||
+                    orient3d(m.pos(x[0]), m.pos(x[1]), m.pos(x[2]), m.pos(x[3])) <= 0)
+                    return kInvalid;
+                worst = std::min(worst, radiusRatio(m.ref(x[0]), m.ref(x[1]), m.ref(x[2]), m.ref(x[3])));
+            }
+            return worst;
+        };
+        double best[7][7];
+        int split[7][7];
+        for (int i = 0; i < n; ++i)
+            for (int k = 0; k < n; ++k) {
+                best[i][k] = k == i + 1 ? 2.0 : kInvalid;
+                split[i][k] = -1;
+            }
+        for (int len = 2; len < n; ++len)
+            for (int i = 0; i + len < n; ++i) {
+                const int k = i + len;
+                for (int j = i + 1; j < k; ++j) {
+                    const double v = std::min({best[i][j], best[j][k], quality(i, j, k)});
+                    if (v > best[i][k]) {
+                        best[i][k] = v;
+                        split[i][k] = j;
+                    }
+                }
+            }
+        double worstOld = 1;
+        for (int u : ring)
+            worstOld = std::min(worstOld, tetRatio(u));
+        if (!(best[0][n - 1] > worstOld * (1 + 1e-9) + 1e-12))
+            return false;
+        std::vector<Tet> created;
+        std::vector<std::array<int, 2>> stack{{0, n - 1}};
+        while (!stack.empty()) {
+            const auto [i, k] = stack.back();
+            stack.pop_back();
+            if (k - i < 2)
+                continue;
+            const int j = split[i][k];
+            created.push_back({polygon[i], polygon[j], polygon[k], p});
+            created.push_back({polygon[j], polygon[i], polygon[k], q});
+            stack.push_back({i, j});
+            stack.push_back({j, k});
+        }
+        replaceTets(ring, created);
+        return true;
+    }
+
+    void flipSweep() {
+        // The bad tets of the region, by their nodes (indices change as tets are replaced).
+        std::vector<Tet> bad;
+        std::unordered_set<int> seen;
+        std::vector<int> around = nodes;
+        around.insert(around.end(), fixedInRegion.begin(), fixedInRegion.end());
+        for (int n : around) {
+            if (!alive(n))
+                continue;
+            for (int t : m.nodeTets(n))
+                if (seen.insert(t).second && tetRatio(t) < o.badRatio && editableTet(m.tet(t)))
+                    bad.push_back(m.tet(t));
+        }
+        for (const Tet& nodesOfBad : bad) {
+            const int t = findTet(nodesOfBad);
+            if (t < 0)
+                continue;
+            bool flipped = false;
+            for (const auto& e : kTetEdges)
+                if (!flipped && tryEdgeRemoval(m.tet(t)[e[0]], m.tet(t)[e[1]]))
+                    flipped = true;
+            for (int i = 0; i < 4 && !flipped; ++i)
+                flipped = tryFlip23(t, i);
         }
     }
 
@@ -771,9 +1053,10 @@ private:
                 tetOrigin.resize(m.tetCount());
                 std::iota(tetOrigin.begin(), tetOrigin.end(), 0);
             }
-            r.newTet.assign(m.tetCount() + r.removedTets, -1);
+            r.newTet.assign(tetsAtStart, -1);
             for (int s = 0; s < static_cast<int>(tetOrigin.size()); ++s)
-                r.newTet[tetOrigin[s]] = s;
+                if (tetOrigin[s] >= 0)
+                    r.newTet[tetOrigin[s]] = s;
         }
         const auto map = [&](int n) { return renumber ? r.newNode[n] : n; };
         for (int n : moved)

@@ -51,6 +51,15 @@ struct ImproveLimits {
 struct ImproveOptions {
     double badRatio = 0;        ///< radius ratio (3 r_in / R) below which a tet is improved; in [0, 1]
     double shortEdge = 0;       ///< reference length below which an edge is collapsed; >= 0
+    /// Coarsening: edges shorter than this are collapsed too where the worst tet around them
+    /// does not fall below min(badRatio, its value before) and no edge grows beyond maxEdge
+    /// (0: off), so that repeated cuts do not keep adding tets.
+    double coarsenEdge = 0;
+    double maxEdge = 0;
+    /// Floors: an edge shorter than floorEdge is collapsed even where the tets around it get
+    /// worse, as long as none falls below floorRatio (0: no floor).
+    double floorEdge = 0;
+    double floorRatio = 0;
     int rings = 2;              ///< size of the region around the seeds
     int sweeps = 3;             ///< collapse + smoothing sweeps over the region
     /// Largest distance a boundary node may move off the boundary it was on, as a fraction of
@@ -67,11 +76,12 @@ struct ImproveOptions {
     std::optional<std::array<Vec3, 2>> keepOut;
 };
 
-/// The nodes the pass may change (seeds and their rings, minus fixed nodes) and the tets that
-/// may change (those of these nodes).
+/// The nodes the pass may move (seeds and their rings, minus fixed nodes), the fixed nodes among
+/// them, and the tets that may change (those of both).
 struct ImproveRegion {
     std::vector<int> nodes;
-    std::vector<int> tets;
+    std::vector<int> fixed;  ///< fixed nodes within the rings: never moved, but their tets may be flipped
+    std::vector<int> tets;   ///< the tets of both
 };
 ImproveRegion improveRegion(const TetMesh& mesh, const std::vector<int>& seeds, const std::vector<int>& fixedNodes,
                             int rings);
@@ -79,6 +89,7 @@ ImproveRegion improveRegion(const TetMesh& mesh, const std::vector<int>& seeds, 
 struct ImproveResult {
     int collapses = 0;         ///< edges collapsed
     int smoothed = 0;          ///< nodes moved by smoothing
+    int flips = 0;             ///< 2-3 and 3-2 flips
     int removedTets = 0, removedNodes = 0;
     double worstBefore = 1, worstAfter = 1;  ///< smallest radius ratio over the region's tets
     /// Final indices of the nodes that moved (smoothing, merged nodes) and of every node whose

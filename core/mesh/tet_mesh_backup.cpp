@@ -48,9 +48,11 @@ void TetMeshBackup::restore() {
         m.m_backups.open.back()->restore();
     // Recorded state is written back directly (no attach/detach): each node's adjacency list
     // is restored verbatim, which also drops the entries of appended tets.
-    for (const auto& [t, nodes] : m_savedTets)
-        m.m_tets[t] = nodes;
+    // (Sized first: tets removed from the end since are written back to where they were.)
     m.m_tets.resize(m_tets);
+    for (const auto& [t, nodes] : m_savedTets)
+        if (t < m_tets)
+            m.m_tets[t] = nodes;
     m.m_ref.resize(m_nodes);
     m.m_pos.resize(m_nodes);
     m.m_vel.resize(m_nodes);

@@ -14,6 +14,17 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Step 7's settings beyond CutOptions, measured on 20-scoop resections (test_resection_quality,
+// resect bench resection): coarsening never makes an edge longer than this many mean edge
+// lengths, and the pass sweeps the region up to this many times.
+constexpr double kCoarsenMaxEdge = 1.5;
+constexpr int kImproveSweeps = 5;
+// Edges shorter than this fraction of the input's shortest are collapsed even at some cost to
+// the tets around them, down to this fraction of the input's worst radius ratio (margins above
+// the bounds a resection must keep: 0.3 and 0.5, issue 16).
+constexpr double kFloorEdge = 0.35;
+constexpr double kFloorRatio = 0.6;
+
 double msSince(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
@@ -273,6 +284,11 @@ void Tissue::improve(TissueCut& result, const std::vector<int>& seeds, const Cut
     ImproveOptions io;
     io.badRatio = options.improveQuality * m_inputWorstRatio;
     io.shortEdge = options.improveShortEdge * m_inputShortestEdge;
+    io.coarsenEdge = options.improveCoarsen * meanEdgeLength();
+    io.maxEdge = kCoarsenMaxEdge * meanEdgeLength();
+    io.sweeps = kImproveSweeps;
+    io.floorEdge = kFloorEdge * m_inputShortestEdge;
+    io.floorRatio = kFloorRatio * m_inputWorstRatio;
     io.density = m_material.density;
     io.keepOut = m_anchors.box();
     const ImproveRegion region = improveRegion(*m_mesh, seeds, m_anchors.nodes(), io.rings);
