@@ -22,8 +22,8 @@ constexpr int kImproveSweeps = 5;
 // Edges shorter than this fraction of the input's shortest are collapsed even at some cost to
 // the tets around them, down to this fraction of the input's worst radius ratio (margins above
 // the bounds a resection must keep: 0.3 and 0.5, issue 16).
-constexpr double kFloorEdge = 0.35;
-constexpr double kFloorRatio = 0.6;
+constexpr double kFloorEdge = 0.45;
+constexpr double kFloorRatio = 0.55;
 
 double msSince(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
