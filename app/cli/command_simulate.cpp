@@ -2,12 +2,14 @@
 //     [--integrator explicit|implicit|symplectic-euler|velocity-verlet|backward-euler]
 //     [--effects deformation,gravity,...] [--fix-box x0 y0 z0 x1 y1 z1]
 //     [--damping C] [--tool x,y,z,x,y,z,... --tool-radius R] [--threads N]
+//     [--resected rigid|remove|deformable]
 //
 // Runs the tissue model (core/sim) for N steps and writes the deformed mesh and a report:
 //   {"steps", "requested_steps", "dt", "stable_dt", "integrator", "threads", "time_s",
 //    "effects": [{"name", "time_ms"}, ...]   (only the effects run, in run order)
 //    "finite", "max_speed", "kinetic_energy": {"initial", "max", "final"}, "inverted",
-//    "error" (only when the simulation diverged)}
+//    "error" (only when the simulation diverged),
+//    "resected": {"policy", "pieces", "volume", "mass", "mass_before", "mass_remaining"}}
 // Units: mm, g, s; speeds in mm/s, energies in g mm^2/s^2. max_speed is the largest node
 // speed seen after any step; inverted counts tets with non-positive current volume at the end.
 //
@@ -15,13 +17,21 @@
 // explicit step of the mesh (also reported as stable_dt). --fix-box anchors the nodes whose
 // reference position lies in the box and adds the "fixed" effect; "fixed" without --fix-box,
 // "tool-contact" without --tool, and --damping without "damping" are bad input.
+// With --fix-box, pieces of the input without a node in the box are resected (a mesh cut with
+// `resect cut --resected keep`): by default each falls as one rigid body onto the plane under
+// the input's lowest point and is written with the tissue where it came to rest (rigid),
+// or leaves (remove), or is simulated like the rest (deformable).
 //
 // Exit codes: 0 success; 2 bad input (one line naming the option or file); 1 if the
 // simulation diverged: the report is still written, with "finite": false, "steps" the steps
 // completed and "error" the simulator's message, and OUT is not written.
 #include "app/cli/cli_common.h"
 
+#include "core/mesh/masses.h"
+#include "core/mesh/topology.h"
+#include "core/sim/anchors.h"
 #include "core/sim/simulator.h"
+#include "core/tissue/resect_pieces.h"
 #include "scenario/mesh_io.h"
 
 #include <QJsonArray>
@@ -90,6 +100,7 @@ int runSimulate(Args args) {
     const Integrator integrator = parseIntegrator(args.option("--integrator").value_or("explicit"));
     const std::string effectList = args.option("--effects").value_or("deformation");
     const auto box = args.numbers("--fix-box", 6, "x0 y0 z0 x1 y1 z1");
+    const auto resectedText = args.option("--resected");
     const auto damping = args.number("--damping", 0.0, 1e12);
     const auto toolText = args.option("--tool");
     const auto toolRadius = args.number("--tool-radius", 0.0, 1e12);
@@ -104,6 +115,15 @@ int runSimulate(Args args) {
         badInput("--steps is required (a whole number >= 1)");
     if (dt && !(*dt > 0))
         badInput("--dt must be positive, got " + std::to_string(*dt));
+    // Pieces of the input holding no node in the fixed box are resected: rigid chips by
+    // default, or removed, or simulated as deformable tissue like the rest.
+    ResectedPieces resected = ResectedPieces::Rigid;
+    if (resectedText) {
+        if (!parseResectedPieces(*resectedText, resected) || *resectedText == "keep")
+            badInput("--resected: expected rigid, remove or deformable, got '" + *resectedText + "'");
+        if (!box)
+            badInput("--resected needs --fix-box x0 y0 z0 x1 y1 z1 (the pieces off the box are resected)");
+    }
 
     const EffectRegistry registry = EffectRegistry::withBuiltins();
     std::vector<std::string> effects;
@@ -152,6 +172,34 @@ int runSimulate(Args args) {
 
     TetMesh mesh;
     requireOk(readTetMesh(files[0], mesh));
+    std::vector<Chip> chips;
+    const double massBefore = sumOfMasses(mesh);
+    if (box && resected != ResectedPieces::Keep) {
+        Anchors anchors;
+        FixedSelection selection;
+        selection.box = settings.fixed.box;
+        if (Status s = Anchors::create(mesh, selection, anchors); !s.ok())
+            badInput("--fix-box: " + s.message());
+        const Components pieces = connectedComponents(mesh);
+        if (!anchors.empty() && pieces.count > 1) {
+            (void)resectPieces(mesh, pieces, anchors, 0, chips);
+            for (Chip& chip : chips)
+                makeRigidBody(chip);
+        }
+    }
+    double resectedVolume = 0, resectedMass = 0;
+    for (const Chip& chip : chips) {
+        resectedVolume += chip.volume;
+        resectedMass += chip.mass;
+    }
+    // Rigid chips fall onto the plane under the input's lowest point.
+    double floor = std::numeric_limits<double>::infinity();
+    for (const Vec3& p : mesh.referencePositions())
+        floor = std::min(floor, p.z());
+    for (const Chip& chip : chips)
+        for (int n = 0; n < chip.mesh.nodeCount(); ++n)
+            floor = std::min(floor, chip.mesh.ref(n).z());
+    const bool rigidChips = resected == ResectedPieces::Rigid && !chips.empty();
     SimulatorOptions options;
     options.integrator = integrator;
     options.threads = threads;
@@ -173,6 +221,8 @@ int runSimulate(Args args) {
         failure = sim.step(h);
         if (!failure.ok())
             break;
+        if (rigidChips)
+            stepChips(chips, h, requested("gravity") ? settings.gravity : Vec3::Zero(), floor);
         maxKinetic = std::max(maxKinetic, sim.lastStep().kineticEnergy);
         maxSpeed = std::max(maxSpeed, sim.lastStep().maxSpeed);
         finalKinetic = sim.lastStep().kineticEnergy;
@@ -205,6 +255,12 @@ int runSimulate(Args args) {
     kinetic["final"] = number(finalKinetic);
     report["kinetic_energy"] = kinetic;
     report["inverted"] = countInverted(mesh);
+    report["resected"] = QJsonObject{{"policy", box ? resectedPiecesName(resected) : "none"},
+                                     {"pieces", static_cast<int>(chips.size())},
+                                     {"volume", resectedVolume},
+                                     {"mass", resectedMass},
+                                     {"mass_before", massBefore},
+                                     {"mass_remaining", sumOfMasses(mesh)}};
     if (!failure.ok())
         report["error"] = QString::fromStdString(failure.message());
     if (reportPath)
@@ -214,7 +270,22 @@ int runSimulate(Args args) {
         throw CliError{kInternal, failure.ok() ? "the simulation produced non-finite positions; " +
                                                      out + " not written"
                                                : failure.message() + "; " + out + " not written"};
-    if (Status s = writeVtu(out, mesh); !s.ok())
+    // Rigid chips are part of the scene: written with the tissue, where they came to rest.
+    TetMesh scene = mesh;
+    if (rigidChips)
+        for (const Chip& chip : chips) {
+            const int base = scene.nodeCount();
+            for (int n = 0; n < chip.mesh.nodeCount(); ++n) {
+                const int added = scene.addNode(chip.mesh.ref(n), chip.mesh.pos(n));
+                scene.setMass(added, chip.mesh.masses()[n]);
+            }
+            for (Tet q : chip.mesh.tets()) {
+                for (int& v : q)
+                    v += base;
+                scene.addTet(q);
+            }
+        }
+    if (Status s = writeVtu(out, scene); !s.ok())
         throw CliError{kInternal, s.message()};
     std::printf(
         "%s: %d steps of %.4g s (%s, stable %.4g s), max speed %.4g mm/s, %d inverted -> %s\n",

@@ -3,6 +3,7 @@
 // implicit integrator at large steps, and bad input (exit 2, one line naming the option).
 #include "core/mesh/box_mesh.h"
 #include "core/mesh/masses.h"
+#include "core/mesh/topology.h"
 #include "scenario/mesh_io.h"
 
 #include "cli_runner.h"
@@ -183,6 +184,83 @@ private slots:
         QVERIFY(rep["max_speed"].toDouble() > 0); // the tool pushed the top face in
     }
 
+    void resectedPieces_data() {
+        QTest::addColumn<QString>("policy");
+        QTest::newRow("rigid (default)") << QString();
+        QTest::newRow("remove") << "remove";
+        QTest::newRow("deformable") << "deformable";
+    }
+    void resectedPieces() {
+        // A cut bar in two pieces, fixed at its left end: the right piece is resected. Rigid
+        // (the default) it falls as one body and is written with the tissue; removed it
+        // leaves; deformable it is simulated with the rest. Mass is accounted for.
+        QFETCH(QString, policy);
+        TetMesh bar = makeBoxTetMesh(Vec3::Zero(), Vec3(6, 2, 2), 12, 4, 4);
+        // Split at x = 4: the tets right of it get their own copies of the nodes on x = 4.
+        std::vector<int> copyOf(bar.nodeCount(), -1);
+        for (int t = 0; t < bar.tetCount(); ++t) {
+            Tet q = bar.tet(t);
+            Vec3 centre = Vec3::Zero();
+            for (int v : q)
+                centre += bar.ref(v) / 4;
+            if (centre.x() < 4)
+                continue;
+            for (int& v : q)
+                if (bar.ref(v).x() == 4) {
+                    if (copyOf[v] < 0)
+                        copyOf[v] = bar.addNode(bar.ref(v), bar.pos(v));
+                    v = copyOf[v];
+                }
+            bar.replaceTet(t, q);
+        }
+        // The right piece floats 1 mm above the floor (the bar's bottom, z = 0).
+        {
+            const Components pieces = connectedComponents(bar);
+            const int right = pieces.nodeComponent[copyOf[std::find_if(copyOf.begin(), copyOf.end(), [](int c) { return c >= 0; }) - copyOf.begin()]];
+            for (int n = 0; n < bar.nodeCount(); ++n)
+                if (pieces.nodeComponent[n] == right)
+                    bar.setNodePosition(n, bar.ref(n) + Vec3::UnitZ(), bar.pos(n) + Vec3::UnitZ());
+        }
+        computeLumpedMasses(bar, 1e-3);
+        QCOMPARE(connectedComponents(bar).count, 2);
+        QVERIFY(writeVtu(path("split.vtu").toStdString(), bar).ok());
+        QStringList args{"simulate", path("split.vtu"), "--steps", "2000", "--dt", "1e-4", "--integrator", "implicit",
+                         "--effects", "deformation,gravity", "--fix-box", "-1", "-1", "-1", "0.01", "3", "3",
+                         "--out", path("s.vtu"), "--report", path("s.json")};
+        if (!policy.isEmpty())
+            args << "--resected" << policy;
+        const Run r = runCli(args);
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        if (policy == "deformable") {
+            // Simulated as tissue: with nothing holding it, it falls freely (below the floor).
+            TetMesh out;
+            QVERIFY(readTetMesh(path("s.vtu").toStdString(), out).ok());
+            double highest = -1e9;
+            for (int n = 0; n < out.nodeCount(); ++n)
+                if (out.ref(n).z() > 0.999 && out.ref(n).x() > 4.001)
+                    highest = std::max(highest, out.pos(n).z());
+            QVERIFY2(highest < -100, qPrintable(QString::number(highest)));
+        }
+        const QJsonObject resected = readJsonFile(path("s.json"))["resected"].toObject();
+        const bool deformable = policy == "deformable";
+        QCOMPARE(resected["policy"].toString(), policy.isEmpty() ? QString("rigid") : (deformable ? QString("keep") : policy));
+        QCOMPARE(resected["pieces"].toInt(), deformable ? 0 : 1);
+        const double mass = resected["mass_before"].toDouble();
+        QVERIFY(mass > 0);
+        QVERIFY(std::abs(resected["mass_remaining"].toDouble() + resected["mass"].toDouble() - mass) <= 1e-9 * mass);
+        TetMesh out;
+        QVERIFY(readTetMesh(path("s.vtu").toStdString(), out).ok());
+        QCOMPARE(connectedComponents(out).count, policy == "remove" ? 1 : 2);
+        if (policy.isEmpty()) {
+            // The chip fell for 0.2 s (g t^2 / 2 = 196 mm): from 1 mm above the floor onto it.
+            double lowest = 1e9;
+            for (int n = 0; n < out.nodeCount(); ++n)
+                if (out.ref(n).z() > 0.999 && out.ref(n).x() > 4.001)
+                    lowest = std::min(lowest, out.pos(n).z());
+            QVERIFY2(lowest > -0.05 && lowest < 0.05, qPrintable(QString::number(lowest)));
+        }
+    }
+
     void badInput_data() {
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("message");
@@ -243,6 +321,11 @@ private slots:
             << "--tool-radius";
         QTest::newRow("unknown option")
             << (QStringList{"simulate", "bar.vtu", "--bogus"} + base) << "--bogus";
+        QTest::newRow("resected keep")
+            << (QStringList{"simulate", "bar.vtu", "--fix-box", "-1", "-1", "-1", "0.01", "3", "3", "--resected", "keep"} + base)
+            << "--resected";
+        QTest::newRow("resected without box")
+            << (QStringList{"simulate", "bar.vtu", "--resected", "remove"} + base) << "--fix-box";
         QTest::newRow("out is input")
             << QStringList{"simulate", "bar.vtu", "--steps", "5", "--out", "bar.vtu"} << "input";
     }
