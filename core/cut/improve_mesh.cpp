@@ -75,6 +75,7 @@ ImproveRegion improveRegion(const TetMesh& mesh, const std::vector<int>& seeds, 
 namespace {
 
 constexpr int kOmega = -1;  // the virtual vertex that closes the boundary (link condition)
+constexpr int kSmoothingIterations = 40;  // ascent steps per node and sweep
 
 /// The tet q with node v placed at p (reference positions otherwise).
 std::array<Vec3, 4> cornersWith(const TetMesh& m, const Tet& q, int v, const Vec3& p, bool current) {
@@ -978,7 +979,7 @@ private:
                 worst = q;
             }
         }
-        for (int iteration = 0; iteration < 40; ++iteration) {
+        for (int iteration = 0; iteration < kSmoothingIterations; ++iteration) {
             Vec3 d = Vec3::Zero();
             worst = score(x, &d);
             if (worst >= 1)

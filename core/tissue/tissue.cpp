@@ -19,6 +19,10 @@ using Clock = std::chrono::steady_clock;
 // lengths, and the pass sweeps the region up to this many times.
 constexpr double kCoarsenMaxEdge = 1.5;
 constexpr int kImproveSweeps = 5;
+// Tets at or above this radius ratio are well shaped whatever the input: improving them costs
+// time, not stability (a cut through a lattice box whose tets are all 0.72 costs 38 ms at 10k
+// tets with this cap, 420 ms without).
+constexpr double kImproveRatioCap = 0.55;
 // Edges shorter than this fraction of the input's shortest are collapsed even at some cost to
 // the tets around them, down to this fraction of the input's worst radius ratio (margins above
 // the bounds a resection must keep: 0.3 and 0.5, issue 16).
@@ -282,7 +286,7 @@ void Tissue::resect(TissueCut& result, std::vector<int>& seeds, bool& rebuild) {
 
 void Tissue::improve(TissueCut& result, const std::vector<int>& seeds, const CutOptions& options, bool& rebuild) {
     ImproveOptions io;
-    io.badRatio = options.improveQuality * m_inputWorstRatio;
+    io.badRatio = std::min(options.improveQuality * m_inputWorstRatio, kImproveRatioCap);
     io.shortEdge = options.improveShortEdge * m_inputShortestEdge;
     io.coarsenEdge = options.improveCoarsen * meanEdgeLength();
     io.maxEdge = kCoarsenMaxEdge * meanEdgeLength();
