@@ -140,7 +140,11 @@ int runSurface(Args& args) {
     return kOk;
 }
 
+int runBenchResection(Args& args);  // resect bench resection (command_bench_resection.cpp)
+
 int runBench(Args args) {
+    if (args.flag("resection"))
+        return runBenchResection(args);
     if (args.flag("sim"))
         return runBenchSim(args);
     if (args.flag("surface"))

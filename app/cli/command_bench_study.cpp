@@ -9,6 +9,7 @@
 // (no display and no xvfb-run, resect-plot missing or failing): the CSVs and summary are
 // written all the same and the message says why the PNGs are missing.
 #include "app/cli/cli_common.h"
+#include "app/cli/plotter.h"
 
 #include "scenario/accuracy_study.h"
 #include "scenario/atomic_file.h"
@@ -45,55 +46,6 @@ StudyProgress printer(const char* study) {
         }
         return true;
     };
-}
-
-/// Runs resect-plot once; empty on success, else why the plots are missing.
-std::string drawPlotsOnce(const QString& dir) {
-    const QString plotter = QCoreApplication::applicationDirPath() + "/resect-plot";
-    if (!QFileInfo(plotter).isExecutable())
-        return "the plotter " + plotter.toStdString() + " is not built";
-    QStringList args{"--accuracy", dir + "/accuracy_time.csv", "--scaling", dir + "/scaling.csv", "--out", dir};
-    QString program = plotter;
-    const char* display = std::getenv("DISPLAY");
-    if (!display || !*display) {
-        const QString xvfb = QStandardPaths::findExecutable("xvfb-run");
-        if (xvfb.isEmpty())
-            return "no X display (DISPLAY is unset) and no xvfb-run to start one (install xvfb)";
-        args = QStringList{"-a", "-s", "-screen 0 1280x1024x24", plotter} + args;
-        program = xvfb;
-    }
-    QProcess p;
-    p.setProcessChannelMode(QProcess::ForwardedChannels);
-    p.start(program, args);
-    if (!p.waitForStarted(30000))
-        return "cannot start " + program.toStdString();
-    if (!p.waitForFinished(600000)) {
-        p.kill();
-        p.waitForFinished();
-        return "resect-plot did not finish within 10 minutes";
-    }
-    if (p.exitStatus() != QProcess::NormalExit)
-        return "resect-plot crashed";
-    if (p.exitCode() != 0)
-        return "resect-plot failed (exit code " + std::to_string(p.exitCode()) + ", see its message above)";
-    return {};
-}
-
-/// Runs resect-plot, up to kPlotAttempts times: a fresh Xvfb started by xvfb-run -a now and then
-/// loses its display to another one started at the same moment (two draw at once on a shared
-/// machine), and the plotter then cannot connect; a second Xvfb gets another display.
-std::string drawPlots(const QString& dir) {
-    constexpr int kPlotAttempts = 3;
-    std::string why;
-    for (int attempt = 0; attempt < kPlotAttempts; ++attempt) {
-        why = drawPlotsOnce(dir);
-        if (why.empty())
-            return why;
-        std::fprintf(stderr, "resect bench: drawing the plots failed (%s)%s\n", why.c_str(),
-                     attempt + 1 < kPlotAttempts ? "; trying again" : "");
-        QThread::msleep(200);
-    }
-    return why;
 }
 
 } // namespace
@@ -152,7 +104,11 @@ int runBenchStudy(Args& args) {
     if (noPlots)
         return kOk;
     const auto t2 = std::chrono::steady_clock::now();
-    if (const std::string why = drawPlots(QString::fromStdString(base)); !why.empty())
+    const QString plots = QString::fromStdString(base);
+    if (const std::string why = runPlotter({"--accuracy", plots + "/accuracy_time.csv", "--scaling",
+                                            plots + "/scaling.csv", "--out", plots},
+                                           "resect bench");
+        !why.empty())
         throw CliError{kInternal, "the CSVs and summary.md are written, but no plots: " + why +
                                       " (draw them later with resect-plot, or pass --no-plots)"};
     std::printf("plots drawn in %.1f s; total %.1f s\n", seconds(t2), seconds(t0));

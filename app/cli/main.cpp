@@ -55,6 +55,11 @@ commands:
                                     cost of one explicit simulation step per tet
   bench surface [--details 1,5]     embedded surface: bind, apply, re-bind, cut (myoma
                                     surface at 40k x detail triangles)
+  bench resection --out DIR [--sample polyp,myoma|none] [--surface PATH ...] [--passes 20]
+      [--no-plots]                  a whole resection: K = 1..passes loop scoops with
+                                    subdivision, hybrid and hybrid + improvement; per pass
+                                    tets, worst radius ratio, shortest edge, stable dt, ms:
+                                    DIR/resection.csv, resection.md, resection.png
 
 exit codes: 0 success, 2 bad input, 1 internal failure
 )";

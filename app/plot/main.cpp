@@ -5,9 +5,13 @@
 //                   as points and each method's Pareto front as a line;
 //   d_MESH.png      against d: sweep error, minimum radius ratio, stable time step;
 //   scaling.png     log-log: absolute times and per-unit costs against the mesh size, with
-//                   the targets as dashed lines.
+//                   the targets as dashed lines;
+//   resection.png   `resect bench resection`: worst radius ratio, shortest edge (both log) and
+//                   tets of the remaining tissue, over the input's, against the pass; one line
+//                   per mesh (line and marker style) and method (colour).
 //
-//   resect-plot --accuracy accuracy_time.csv --scaling scaling.csv --out DIR
+//   resect-plot [--accuracy accuracy_time.csv] [--scaling scaling.csv]
+//               [--resection resection.csv] --out DIR
 //
 // VTK 9.1 on Debian renders through GLX, so this needs an X display (run it under
 // `xvfb-run -a` on a headless machine; `resect bench` does). It checks the display and GLX
@@ -103,6 +107,8 @@ private:
         std::string cell;
         while (std::getline(ss, cell, ','))
             out.push_back(cell);
+        if (!line.empty() && line.back() == ',')
+            out.emplace_back(); // a trailing empty cell (getline does not return it)
         return out;
     }
     std::size_t index(const std::string& column) const {
@@ -127,15 +133,16 @@ using Points = std::vector<std::pair<double, double>>;
 
 enum class Style { Line, Markers, LineAndMarkers, Dashed };
 
-void addSeries(vtkChart* chart, const std::string& label, Points points, Rgb colour, Style style,
-               bool logX, bool logY, bool sortByX = true) {
+/// The plot added, or null if no point can be shown.
+vtkPlot* addSeries(vtkChart* chart, const std::string& label, Points points, Rgb colour,
+                   Style style, bool logX, bool logY, bool sortByX = true) {
     // Log axes cannot show zero or negative values: leave those points out.
     std::erase_if(points, [&](const auto& p) {
         return !std::isfinite(p.first) || !std::isfinite(p.second) || (logX && p.first <= 0) ||
                (logY && p.second <= 0);
     });
     if (points.empty())
-        return;
+        return nullptr;
     if (sortByX)
         std::sort(points.begin(), points.end());
     if (points.size() < 2 && style != Style::Markers)
@@ -169,6 +176,7 @@ void addSeries(vtkChart* chart, const std::string& label, Points points, Rgb col
     }
     if (style == Style::Markers)
         plot->SetColor(colour.r, colour.g, colour.b, 110);
+    return plot;
 }
 
 void setupChart(vtkChart* chart, const std::string& title, const std::string& xTitle, const std::string& yTitle,
@@ -371,6 +379,65 @@ void plotScaling(const Csv& csv, const std::string& dir) {
     writePng(panels.view, dir + "/scaling.png");
 }
 
+void plotResection(const Csv& csv, const std::string& dir) {
+    std::vector<std::string> meshes, methods;
+    for (int r = 0; r < csv.rows(); ++r)
+        for (auto [list, column] : {std::pair{&meshes, "mesh"}, std::pair{&methods, "method"}})
+            if (std::find(list->begin(), list->end(), csv.text(r, column)) == list->end())
+                list->push_back(csv.text(r, column));
+    const auto colour = [](const std::string& method) {
+        return method == "subdivision" ? kSubdivision : method == "hybrid" ? kStandard : kEnhanced;
+    };
+    // Meshes told apart by line type and marker (the methods by colour).
+    const int lineTypes[] = {vtkPen::SOLID_LINE, vtkPen::DASH_LINE, vtkPen::DOT_LINE,
+                             vtkPen::DASH_DOT_LINE, vtkPen::DASH_DOT_DOT_LINE};
+    const int markers[] = {vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE, vtkPlotPoints::DIAMOND,
+                           vtkPlotPoints::CROSS, vtkPlotPoints::PLUS};
+    // The legend where the lines rarely are: below, left in the falling ratios (the worst
+    // method falls fast), above, left in the tets (which grow, if at all, late).
+    const struct {
+        const char* column;
+        const char* title;
+        const char* axis;
+        bool logY;
+        int legendAt;
+    } panelsOf[] = {
+        {"worst_ratio_rel", "worst radius ratio over the input's (log)", "worst ratio / input",
+         true, vtkChartLegend::BOTTOM},
+        {"shortest_edge_rel", "shortest edge over the input's (log)", "shortest edge / input", true,
+         vtkChartLegend::BOTTOM},
+        {"tets_rel", "tets over the input's", "tets / input", false, vtkChartLegend::TOP}};
+    Panels panels(3, 1800, 600);
+    for (int c = 0; c < 3; ++c) {
+        vtkChart* chart = panels.chart(c);
+        setupChart(chart, std::string("Resection: ") + panelsOf[c].title, "pass (scoops so far)",
+                   panelsOf[c].axis, false, panelsOf[c].logY);
+        if (auto* xy = vtkChartXY::SafeDownCast(chart)) {
+            xy->GetLegend()->SetHorizontalAlignment(vtkChartLegend::LEFT);
+            xy->GetLegend()->SetVerticalAlignment(panelsOf[c].legendAt);
+        }
+        for (std::size_t m = 0; m < meshes.size(); ++m)
+            for (const std::string& method : methods) {
+                Points points{{0.0, 1.0}}; // pass 0: the input, over itself
+                for (int r = 0; r < csv.rows(); ++r)
+                    if (csv.text(r, "mesh") == meshes[m] && csv.text(r, "method") == method &&
+                        csv.text(r, "status") == "ok")
+                        points.emplace_back(csv.number(r, "pass"),
+                                            csv.number(r, panelsOf[c].column));
+                vtkPlot* plot = addSeries(chart, meshes[m] + ": " + method, points, colour(method),
+                                          Style::LineAndMarkers, false, panelsOf[c].logY);
+                if (!plot)
+                    continue;
+                plot->GetPen()->SetLineType(lineTypes[m % std::size(lineTypes)]);
+                if (auto* p = vtkPlotPoints::SafeDownCast(plot)) {
+                    p->SetMarkerStyle(markers[m % std::size(markers)]);
+                    p->SetMarkerSize(6.0f);
+                }
+            }
+    }
+    writePng(panels.view, dir + "/resection.png");
+}
+
 /// Fails unless an X display with GLX is reachable (VTK 9.1 aborts without one).
 void requireDisplay() {
     if (const std::string problem = resect::plot::displayProblem(); !problem.empty())
@@ -380,7 +447,7 @@ void requireDisplay() {
 } // namespace
 
 int main(int argc, char** argv) {
-    std::string accuracyPath, scalingPath, outDir;
+    std::string accuracyPath, scalingPath, resectionPath, outDir;
     try {
         for (int i = 1; i < argc; ++i) {
             const std::string a = argv[i];
@@ -393,20 +460,24 @@ int main(int argc, char** argv) {
                 accuracyPath = value();
             else if (a == "--scaling")
                 scalingPath = value();
+            else if (a == "--resection")
+                resectionPath = value();
             else if (a == "--out")
                 outDir = value();
             else if (a == "--help" || a == "-h") {
-                std::puts("usage: resect-plot [--accuracy accuracy_time.csv] [--scaling scaling.csv] --out DIR");
+                std::puts(
+                    "usage: resect-plot [--accuracy accuracy_time.csv] [--scaling scaling.csv] "
+                    "[--resection resection.csv] --out DIR");
                 return 0;
             } else
                 throw Failure{2, "unknown option " + a};
         }
         if (outDir.empty())
             throw Failure{2, "--out DIR is required"};
-        if (accuracyPath.empty() && scalingPath.empty())
-            throw Failure{2, "nothing to plot: give --accuracy and/or --scaling"};
+        if (accuracyPath.empty() && scalingPath.empty() && resectionPath.empty())
+            throw Failure{2, "nothing to plot: give --accuracy, --scaling and/or --resection"};
         // Read everything first: bad input is reported before any rendering.
-        Csv accuracy, scaling;
+        Csv accuracy, scaling, resection;
         std::vector<std::string> meshes;
         if (!accuracyPath.empty()) {
             accuracy = Csv::read(accuracyPath);
@@ -416,6 +487,14 @@ int main(int argc, char** argv) {
         }
         if (!scalingPath.empty())
             scaling = Csv::read(scalingPath);
+        if (!resectionPath.empty()) {
+            resection = Csv::read(resectionPath);
+            // every number the plot reads, so that a malformed cell fails before rendering
+            for (int r = 0; r < resection.rows(); ++r)
+                for (const char* column :
+                     {"pass", "worst_ratio_rel", "shortest_edge_rel", "tets_rel"})
+                    resection.number(r, column);
+        }
         requireDisplay();
         for (const std::string& mesh : meshes) {
             plotCost(accuracy, mesh, outDir);
@@ -423,6 +502,8 @@ int main(int argc, char** argv) {
         }
         if (!scalingPath.empty())
             plotScaling(scaling, outDir);
+        if (!resectionPath.empty())
+            plotResection(resection, outDir);
         return 0;
     } catch (const Failure& f) {
         std::fprintf(stderr, "resect-plot: %s\n", f.message.c_str());

@@ -1,0 +1,66 @@
+#include "app/cli/plotter.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QThread>
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace resect::cli {
+
+namespace {
+
+constexpr int kPlotAttempts = 3;
+constexpr int kRetryPauseMs = 1000;          // time for a clashing Xvfb to settle
+constexpr int kPlotterTimeoutMs = 600000;   // 10 minutes
+
+std::string runOnce(const QStringList& plotterArgs) {
+    const QString plotter = QCoreApplication::applicationDirPath() + "/resect-plot";
+    if (!QFileInfo(plotter).isExecutable())
+        return "the plotter " + plotter.toStdString() + " is not built";
+    QStringList args = plotterArgs;
+    QString program = plotter;
+    const char* display = std::getenv("DISPLAY");
+    if (!display || !*display) {
+        const QString xvfb = QStandardPaths::findExecutable("xvfb-run");
+        if (xvfb.isEmpty())
+            return "no X display (DISPLAY is unset) and no xvfb-run to start one (install xvfb)";
+        args = QStringList{"-a", "-s", "-screen 0 1280x1024x24", plotter} + args;
+        program = xvfb;
+    }
+    QProcess p;
+    p.setProcessChannelMode(QProcess::ForwardedChannels);
+    p.start(program, args);
+    if (!p.waitForStarted(30000))
+        return "cannot start " + program.toStdString();
+    if (!p.waitForFinished(kPlotterTimeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        return "resect-plot did not finish within 10 minutes";
+    }
+    if (p.exitStatus() != QProcess::NormalExit)
+        return "resect-plot crashed";
+    if (p.exitCode() != 0)
+        return "resect-plot failed (exit code " + std::to_string(p.exitCode()) + ", see its message above)";
+    return {};
+}
+
+} // namespace
+
+std::string runPlotter(const QStringList& plotterArgs, const char* who) {
+    std::string why;
+    for (int attempt = 0; attempt < kPlotAttempts; ++attempt) {
+        why = runOnce(plotterArgs);
+        if (why.empty())
+            return why;
+        std::fprintf(stderr, "%s: drawing the plots failed (%s)%s\n", who, why.c_str(),
+                     attempt + 1 < kPlotAttempts ? "; trying again" : "");
+        QThread::msleep(kRetryPauseMs);
+    }
+    return why;
+}
+
+} // namespace resect::cli
