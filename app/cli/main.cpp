@@ -32,9 +32,11 @@ commands:
   simulate MESH --steps N --out OUT.vtu [--report R.json] [--dt S]
       [--integrator explicit|implicit|velocity-verlet] [--effects deformation,gravity,...]
       [--fix-box x0 y0 z0 x1 y1 z1] [--damping C] [--tool x,y,z,... --tool-radius R]
-      [--threads N]                 run the tissue model (effects: deformation, gravity,
+      [--threads N] [--resected rigid|remove|deformable]
+                                    run the tissue model (effects: deformation, gravity,
                                     fixed, damping, tool-contact); dt defaults to the stable
-                                    explicit step; exit 1 if it diverged (report still written)
+                                    explicit step; exit 1 if it diverged (report still written);
+                                    with --fix-box, pieces off the box are resected (rigid)
   table1 [--sample polyp|myoma ...] [--d 0.2] [--out TABLE.md]
                                     the paper's Table 1 on the built-in samples
   run SCENARIO.json [--report R.json]
