@@ -93,10 +93,14 @@ double earQuality(const Vec3& a, const Vec3& b, const Vec3& c) {
 /// `allowCutDiagonals`, no diagonal may join two points of the cut (`onCut`): such an edge
 /// could also be made by the cap on the other side of the cut, and the surface would pinch
 /// there; when only such ears are left, the rest of the polygon is returned in `stuck` (empty
-/// when done). False if no ear exists at all (a polygon that is not simple).
-template <class OnCut>
+/// when done). No diagonal may join two points on one edge of the surface triangle
+/// (`onOneEdge`) unless nothing else is left: it would run along that edge, and with the
+/// triangle across the edge the surface would have two triangles on the same points there
+/// (a pocket), or three on one edge. False if no ear exists at all (a polygon that is not
+/// simple).
+template <class OnCut, class OnOneEdge>
 bool earClip(std::vector<int> poly, const std::vector<Vec3>& P, int drop, int sign, const OnCut& onCut,
-             bool allowCutDiagonals, std::vector<Tri>& out, std::vector<int>& stuck) {
+             const OnOneEdge& onOneEdge, bool allowCutDiagonals, std::vector<Tri>& out, std::vector<int>& stuck) {
     stuck.clear();
     while (poly.size() > 3) {
         const int n = static_cast<int>(poly.size());
@@ -114,7 +118,7 @@ bool earClip(std::vector<int> poly, const std::vector<Vec3>& P, int drop, int si
                 const int o = orient2dProjected(P[a], P[b], P[c], drop) * sign;
                 if ((pass == 0 && o <= 0) || (pass == 1 && o < 0))
                     continue;
-                if (!allowCutDiagonals && onCut(a) && onCut(c))
+                if ((!allowCutDiagonals && onCut(a) && onCut(c)) || (pass < 2 && onOneEdge(a, c)))
                     continue;
                 bool ok = true;
                 for (int j = 0; j < n && ok && pass < 2; ++j) {
@@ -603,7 +607,18 @@ public:
                 if (k + 1 < line.size())
                     m_cutEdges.insert(undirected(line[k], line[k + 1]));
             }
-        return emitPieces(t, q, polygons, pieceSides(q, polygons));
+        // The edges of q each boundary point lies on (bit e: edge q[e] -> q[e + 1]).
+        std::unordered_map<int, int> edgesOf;
+        for (std::size_t k = 0, e = 2; k < cycle.size(); ++k) {
+            const int v = cycle[k];
+            if (v == q[(e + 1) % 3]) {
+                e = (e + 1) % 3;
+                edgesOf[v] = (1 << e) | (1 << (e + 2) % 3);
+            } else {
+                edgesOf[v] |= 1 << e;
+            }
+        }
+        return emitPieces(t, q, polygons, pieceSides(q, polygons), edgesOf);
     }
 
     /// The cut's polylines through triangle q, from boundary point to boundary point, traced on
@@ -725,7 +740,8 @@ public:
 
     /// Triangulates every piece in triangle t's plane; the first triangle takes t's slot, the
     /// others are appended (inheriting t's cut-face flag).
-    Status emitPieces(int t, const Tri& q, const std::vector<std::vector<int>>& polygons, const std::vector<int>& side) {
+    Status emitPieces(int t, const Tri& q, const std::vector<std::vector<int>>& polygons, const std::vector<int>& side,
+                      const std::unordered_map<int, int>& edgesOf) {
         const auto& P = m_s.positions;
         const Vec3 n = (P[q[1]] - P[q[0]]).cross(P[q[2]] - P[q[0]]).cwiseAbs();
         const int drop = n.x() >= n.y() ? (n.x() >= n.z() ? 0 : 2) : (n.y() >= n.z() ? 1 : 2);
@@ -744,7 +760,7 @@ public:
             if (poly.size() < 3)
                 continue;
             std::vector<Tri> pieces;
-            if (Status s = triangulatePiece(t, q, poly, drop, sign, side[k], pieces); !s.ok())
+            if (Status s = triangulatePiece(t, q, poly, drop, sign, side[k], edgesOf, pieces); !s.ok())
                 return s;
             for (const Tri& piece : pieces) {
                 int index;
@@ -767,35 +783,118 @@ public:
     /// Triangulates one piece of triangle q (polygon `poly` in its plane) without an edge
     /// between two points of the cut: by ear clipping, and where the cut bulges so that only
     /// such ears are left, by a fan from a new vertex inside the rest (its centroid, if it sees
-    /// the whole rest), else with the pinching edge after all.
+    /// the whole rest), else by ear clipping the rest with such edges and then splitting each
+    /// of them at its middle (splitInnerCutEdges).
+    /// Why no such edge: the two points are also consecutive or nearly so on the cap's
+    /// boundary, and the cap is triangulated in (u, v), where the cut may bend the other way
+    /// than in q's plane; the cap would then close the same few points with its own triangles
+    /// and the surface would pinch into a pocket (an edge of four triangles).
     Status triangulatePiece(int t, const Tri& q, const std::vector<int>& poly, int drop, int sign, int side,
-                            std::vector<Tri>& out) {
+                            const std::unordered_map<int, int>& edgesOf, std::vector<Tri>& out) {
         const auto onCut = [&](int v) { return (v >= m_first && !m_inner.count(v)) || m_cutVertices.count(v) > 0; };
+        const auto onOneEdge = [&](int a, int b) {
+            const auto ia = edgesOf.find(a), ib = edgesOf.find(b);
+            return ia != edgesOf.end() && ib != edgesOf.end() && (ia->second & ib->second) != 0;
+        };
         std::vector<int> rest;
-        if (!earClip(poly, m_s.positions, drop, sign, onCut, false, out, rest))
+        if (!earClip(poly, m_s.positions, drop, sign, onCut, onOneEdge, false, out, rest))
             return Status::error("a piece of a cut surface triangle is not a simple polygon");
         if (rest.empty())
             return Status::success();
         Vec3 centre = Vec3::Zero();
-        for (int v : rest)
+        std::vector<std::pair<int, double>> average;
+        for (int v : rest) {
             centre += m_s.positions[v] / static_cast<double>(rest.size());
+            average.emplace_back(v, 1.0 / static_cast<double>(rest.size()));
+        }
         if (fansFrom(centre, rest, m_s.positions, drop, sign)) {
-            const auto& P = m_s.positions;
-            const Vec3 w = closestPointBarycentric(centre, P[q[0]], P[q[1]], P[q[2]]);
-            // Inside a piece of an earlier cut face, the centre takes that face's (u, v).
-            const Vec2 uv = m_s.cutFaces[t] ? Vec2(w[0] * m_s.cutUvs[q[0]] + w[1] * m_s.cutUvs[q[1]] + w[2] * m_s.cutUvs[q[2]])
-                                            : Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
-            const int c = addVertex(centre, uv, {{q[0], w[0]}, {q[1], w[1]}, {q[2], w[2]}}, {q[0], q[1]});
-            m_inner.insert(c);
-            m_innerSide[c] = side;
+            const int c = addInnerVertex(t, q, average, side);
             for (std::size_t i = 0; i < rest.size(); ++i)
                 out.push_back({c, rest[i], rest[(i + 1) % rest.size()]});
             return Status::success();
         }
+        std::vector<Tri> clipped;
         std::vector<int> none;
-        if (!earClip(rest, m_s.positions, drop, sign, onCut, true, out, none))
+        if (!earClip(rest, m_s.positions, drop, sign, onCut, onOneEdge, true, clipped, none))
             return Status::error("a piece of a cut surface triangle is not a simple polygon");
+        splitInnerCutEdges(t, q, side, onCut, clipped, out);
         return Status::success();
+    }
+
+    /// Triangles `clipped` (a triangulation of one piece of triangle q) with every inner edge
+    /// between two points of the cut split at its middle (a new inner vertex, shared by the two
+    /// triangles beside the edge: the triangulation stays a disc with the same boundary). A
+    /// triangle with k split edges becomes k + 1 triangles, fanned from one of its new
+    /// vertices; a triangle of three cut points with no inner edge (the whole rest) is fanned
+    /// from its centroid. Appends to `out`.
+    template <class OnCut>
+    void splitInnerCutEdges(int t, const Tri& q, int side, const OnCut& onCut, const std::vector<Tri>& clipped,
+                            std::vector<Tri>& out) {
+        std::unordered_map<std::uint64_t, int> uses;
+        for (const Tri& c : clipped)
+            for (int e = 0; e < 3; ++e)
+                ++uses[undirected(c[e], c[(e + 1) % 3])];
+        std::unordered_map<std::uint64_t, int> middle;  // inner cut-to-cut edge -> its middle vertex
+        for (const Tri& c : clipped)
+            for (int e = 0; e < 3; ++e) {
+                const int a = c[e], b = c[(e + 1) % 3];
+                const std::uint64_t key = undirected(a, b);
+                if (uses[key] == 2 && onCut(a) && onCut(b) && !middle.count(key))
+                    middle[key] = addInnerVertex(t, q, {{a, 0.5}, {b, 0.5}}, side);
+            }
+        for (const Tri& c : clipped) {
+            std::vector<int> ring;
+            int hub = -1;
+            for (int e = 0; e < 3; ++e) {
+                ring.push_back(c[e]);
+                if (auto it = middle.find(undirected(c[e], c[(e + 1) % 3])); it != middle.end()) {
+                    if (hub < 0)
+                        hub = static_cast<int>(ring.size());
+                    ring.push_back(it->second);
+                }
+            }
+            if (hub < 0 && onCut(c[0]) && onCut(c[1]) && onCut(c[2])) {
+                const int g = addInnerVertex(t, q, {{c[0], 1.0 / 3}, {c[1], 1.0 / 3}, {c[2], 1.0 / 3}}, side);
+                for (int e = 0; e < 3; ++e)
+                    out.push_back({g, c[e], c[(e + 1) % 3]});
+                continue;
+            }
+            if (hub < 0) {
+                out.push_back(c);
+                continue;
+            }
+            // A fan from a new vertex on the triangle's boundary keeps the triangle's
+            // orientation; no fan triangle has two corners on one edge with it.
+            std::rotate(ring.begin(), ring.begin() + hub, ring.end());
+            for (std::size_t i = 1; i + 1 < ring.size(); ++i)
+                out.push_back({ring[0], ring[i], ring[i + 1]});
+        }
+    }
+
+    /// A new vertex inside a piece of triangle t (corners q), on side `side` of the sweep, at
+    /// the weighted mean `from` of some of the piece's vertices: it is on no cut. Its texture
+    /// coordinates and rest position are interpolated in q (from the mean, where q is too flat
+    /// to have barycentric coordinates); inside a piece of an earlier cut face it takes that
+    /// face's (u, v) the same way.
+    int addInnerVertex(int t, const Tri& q, const std::vector<std::pair<int, double>>& from, int side) {
+        const auto& P = m_s.positions;
+        Vec3 p = Vec3::Zero();
+        for (const auto& [v, w] : from)
+            p += w * P[v];
+        const Vec3 w = closestPointBarycentric(p, P[q[0]], P[q[1]], P[q[2]]);
+        std::vector<std::pair<int, double>> weights = from;
+        if (w.allFinite())
+            weights = {{q[0], w[0]}, {q[1], w[1]}, {q[2], w[2]}};
+        Vec2 uv = Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
+        if (m_s.cutFaces[t]) {
+            uv = Vec2::Zero();
+            for (const auto& [v, wv] : weights)
+                uv += wv * m_s.cutUvs[v];
+        }
+        const int c = addVertex(p, uv, weights, {q[0], q[1]});
+        m_inner.insert(c);
+        m_innerSide[c] = side;
+        return c;
     }
 
     /// A new vertex where a sweep edge pierces triangle q.
@@ -1206,9 +1305,14 @@ public:
     /// A cap edge between two boundary vertices that the surface beside it also has (on
     /// either side: the - cap mirrors the + cap), or between two shared vertices (the - cap has
     /// it too), would make that edge belong to four triangles.
-    /// Such interior cap edges are flipped away (the cap is any triangulation of its loops, so
-    /// this only changes which diagonal it uses); both caps stay mirror images.
-    void avoidSurfaceEdges(std::vector<std::array<int, 3>>& cap, const std::vector<int>& vertexOf) {
+    /// Such interior cap edges are flipped away where the two triangles beside them form a
+    /// strictly convex quadrilateral in (u, v) (the cap is any triangulation of its loops, so
+    /// this only changes which diagonal it uses); any left are split at their middle by a new
+    /// cap vertex (splitCapEdge), which always removes them. `uv` and `vertexOf` (the cap's
+    /// points) grow by the new vertices. With `mirrored`, the cap is the + cap, mirrored on the
+    /// mates (the new vertices get mates too); else it is one side's (`side`) own.
+    void avoidSurfaceEdges(std::vector<std::array<int, 3>>& cap, std::vector<Vec2>& uv, std::vector<int>& vertexOf,
+                           bool mirrored, int side) {
         const auto forbidden = [&](int a, int b) {
             const int u = vertexOf[a], w = vertexOf[b];
             // Between two shared vertices an interior edge of the + cap is one of the - cap too.
@@ -1217,11 +1321,21 @@ public:
             const auto mu = m_mate.find(u), mw = m_mate.find(w);
             return mu != m_mate.end() && mw != m_mate.end() && surfaceHasEdge(mu->second, mw->second);
         };
-        for (int round = 0; round < 4; ++round) {
-            std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>> edges;  // edge -> (triangle, corner opposite)
+        const auto ccw = [&](int a, int b, int c) {
+            return orient2dProjected(Vec3(uv[a].x(), uv[a].y(), 0), Vec3(uv[b].x(), uv[b].y(), 0),
+                                     Vec3(uv[c].x(), uv[c].y(), 0), 2) > 0;
+        };
+        // edge -> (triangle, corner opposite)
+        using EdgeMap = std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>>;
+        const auto edgesOf = [&]() {
+            EdgeMap edges;
             for (int t = 0; t < static_cast<int>(cap.size()); ++t)
                 for (int e = 0; e < 3; ++e)
                     edges[undirected(cap[t][e], cap[t][(e + 1) % 3])].push_back({t, (e + 2) % 3});
+            return edges;
+        };
+        for (int round = 0; round < 4; ++round) {
+            const EdgeMap edges = edgesOf();
             bool flipped = false;
             std::unordered_set<int> changed;
             for (const auto& [key, list] : edges) {
@@ -1237,6 +1351,8 @@ public:
                     continue;
                 // t1 = (x, y, c) with edge x -> y, t2 = (y, x, d): the flip gives (c, x, d), (d, y, c).
                 const int x = cap[t1][(o1 + 1) % 3], y = cap[t1][(o1 + 2) % 3];
+                if (!ccw(c, x, d) || !ccw(d, y, c))
+                    continue;
                 cap[t1] = {c, x, d};
                 cap[t2] = {d, y, c};
                 changed.insert(t1);
@@ -1245,6 +1361,116 @@ public:
             }
             if (!flipped)
                 break;
+        }
+        // Each split removes one forbidden edge and adds only edges at its new vertex.
+        for (bool again = true; again;) {
+            again = false;
+            const EdgeMap edges = edgesOf();
+            for (const auto& [key, list] : edges) {
+                const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+                if (list.size() == 2 && forbidden(a, b)) {
+                    splitCapEdge(cap, uv, vertexOf, list[0], list[1], mirrored, side);
+                    again = true;
+                    break;
+                }
+            }
+        }
+    }
+
+    /// Splits the cap edge between triangles `first` and `second` (each: triangle, corner
+    /// opposite the edge) at its middle: a new vertex there, in space and in (u, v) (the cap's
+    /// shape is unchanged), with a mate for the - cap if `mirrored`.
+    void splitCapEdge(std::vector<std::array<int, 3>>& cap, std::vector<Vec2>& uv, std::vector<int>& vertexOf,
+                      std::pair<int, int> first, std::pair<int, int> second, bool mirrored, int side) {
+        const auto [t1, o1] = first;
+        const auto [t2, o2] = second;
+        // t1 = (x, y, c) with edge x -> y, t2 = (y, x, d).
+        const int x = cap[t1][(o1 + 1) % 3], y = cap[t1][(o1 + 2) % 3], c = cap[t1][o1], d = cap[t2][o2];
+        const Vec2 middle = 0.5 * (uv[x] + uv[y]);
+        const auto addCapVertex = [&](int u, int w, int vertexSide) {
+            const std::array<int, 2> source = u >= m_first ? m_sourceEdge[u - m_first] : std::array<int, 2>{u, w};
+            const int v = addVertex(0.5 * (m_s.positions[u] + m_s.positions[w]), middle, {{u, 0.5}, {w, 0.5}}, source);
+            m_copySide[v] = vertexSide;
+            return v;
+        };
+        const int m = static_cast<int>(uv.size());
+        uv.push_back(middle);
+        vertexOf.push_back(addCapVertex(vertexOf[x], vertexOf[y], side));
+        const auto mx = m_mate.find(vertexOf[x]), my = m_mate.find(vertexOf[y]);
+        if (mirrored && mx != m_mate.end() && my != m_mate.end())  // (else closeCaps reports the missing mate)
+            m_mate[vertexOf[m]] = addCapVertex(mx->second, my->second, -side);
+        cap[t1] = {x, m, c};
+        cap.push_back({m, y, c});
+        cap[t2] = {y, m, d};
+        cap.push_back({m, x, d});
+    }
+
+    /// A chord joining two lips of a partial cut (sidePolygons) runs between two shared
+    /// vertices; where they are neighbours on the surface (the lips end on one surface edge,
+    /// next to each other), the chord is that surface edge, and with the + and the - cap on it
+    /// besides its two surface triangles it would have four. Such a surface edge is split at its
+    /// middle (a new vertex off the cut; the surface keeps its shape), so the chord is an edge
+    /// of the caps only.
+    Status splitSurfaceEdgesUnderChords(const std::map<int, std::vector<std::vector<int>>>& loopsOfPiece) {
+        std::vector<std::array<int, 2>> chords;
+        for (const auto& [piece, pieceLoops] : loopsOfPiece)
+            for (int sign : {1, -1}) {
+                std::vector<std::vector<int>> polygons;
+                if (Status s = sidePolygons(pieceLoops, sign, polygons); !s.ok())
+                    return s;
+                for (const auto& polygon : polygons)
+                    for (std::size_t i = 0; i < polygon.size(); ++i) {
+                        const int u = polygon[i], w = polygon[(i + 1) % polygon.size()];
+                        const bool onLoop = m_edgeSide.count(directed(u, w)) || m_edgeSide.count(directed(w, u));
+                        if (!onLoop && surfaceHasEdge(u, w))
+                            chords.push_back({u, w});
+                    }
+            }
+        for (const auto& [u, w] : chords)
+            if (surfaceHasEdge(u, w))
+                splitSurfaceEdge(u, w);
+        return Status::success();
+    }
+
+    /// Splits the surface edge (u, w) at its middle: each of its two (touched) triangles
+    /// becomes two. The new vertex is off the cut, on the side of the triangles beside it (0 if
+    /// they differ: next to the end of a partial cut both sides are one region).
+    void splitSurfaceEdge(int u, int w) {
+        std::vector<int> beside;
+        for (int t : m_touched) {
+            const Tri& q = m_s.triangles[t];
+            if (std::count(q.begin(), q.end(), u) && std::count(q.begin(), q.end(), w))
+                beside.push_back(t);
+        }
+        const auto sourceOf = [&](int v) {
+            return v < m_first ? std::array<int, 2>{v, v} : m_sourceEdge[v - m_first];
+        };
+        const std::array<int, 2> source = u >= m_first ? sourceOf(u) : sourceOf(w);
+        const int m = addVertex(0.5 * (m_s.positions[u] + m_s.positions[w]), 0.5 * (m_s.cutUvs[u] + m_s.cutUvs[w]),
+                                {{u, 0.5}, {w, 0.5}}, source);
+        m_inner.insert(m);
+        int side = 0;
+        for (std::size_t k = 0; k < beside.size(); ++k) {
+            const int s = m_side.count(beside[k]) ? m_side[beside[k]] : 0;
+            side = k == 0 ? s : s == side ? side : 0;
+        }
+        m_innerSide[m] = side;
+        m_surfaceEdges.erase(undirected(u, w));
+        for (int t : beside) {
+            const Tri q = m_s.triangles[t];
+            int e = 0;
+            while (!((q[e] == u && q[(e + 1) % 3] == w) || (q[e] == w && q[(e + 1) % 3] == u)))
+                ++e;
+            const int a = q[e], b = q[(e + 1) % 3], x = q[(e + 2) % 3];
+            m_edit.replace(t, {a, m, x});
+            m_s.triangles.push_back({m, b, x});
+            m_s.cutFaces.push_back(m_s.cutFaces[t]);
+            const int added = m_s.triangleCount() - 1;
+            if (m_side.count(t))
+                m_side[added] = m_side[t];
+            m_touched.push_back(added);
+            for (int v : {a, b, x})
+                m_surfaceEdges.insert(undirected(m, v));
         }
     }
 
@@ -1263,6 +1489,9 @@ public:
         std::map<int, std::vector<std::vector<int>>> loopsOfPiece;
         for (const auto& loop : loops)
             loopsOfPiece[pieces.find(loop[0])].push_back(loop);
+        if (Status s = splitSurfaceEdgesUnderChords(loopsOfPiece); !s.ok())
+            return s;
+        m_capStart = m_s.triangleCount();  // (the splits appended surface triangles)
         int capCount = 0, closed = 0;
         if (!m_mirrorable)
             return closeEachSide(loopsOfPiece);
@@ -1289,7 +1518,7 @@ public:
             std::vector<std::array<int, 3>> cap;
             if (Status s = triangulateCap(uv, local, side, cap); !s.ok())
                 return s;
-            avoidSurfaceEdges(cap, vertexOf);
+            avoidSurfaceEdges(cap, uv, vertexOf, true, 1);
             for (const auto& c : cap) {
                 // Counter-clockwise in (u, v); the + cap must run against the + boundary.
                 Tri plus{vertexOf[c[0]], vertexOf[c[1]], vertexOf[c[2]]};
@@ -1350,6 +1579,7 @@ public:
                 std::vector<std::array<int, 3>> cap;
                 if (Status s = triangulateCap(uv, local, sign, cap); !s.ok())
                     return s;
+                avoidSurfaceEdges(cap, uv, vertexOf, false, sign);
                 for (const auto& c : cap) {
                     // Counter-clockwise in (u, v): the + cap runs against its boundary, the -
                     // cap (whose region lies right of its boundary) with it.

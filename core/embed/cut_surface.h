@@ -10,7 +10,9 @@
 //  3. triangle splits: inside each crossed triangle the cut is traced across the sweep's
 //     triangles (the points where sweep edges pierce it are added), so the cut's image in the
 //     sweep's (u, v) plane is exact; the triangle is split into the pieces the cut bounds (ear
-//     clipping in its plane, without edges between two points of the cut), each piece with its
+//     clipping in its plane, without edges between two points of the cut, which the cap could
+//     also make, nor along one of its edges, which the triangle across could also make; where
+//     the first cannot be avoided, such edges are split at their middle), each piece with its
 //     side of the sweep;
 //  4. separation: every vertex on the cut gets one copy per group of its triangles connected
 //     through edges not on the cut (as the tets' separate step): two across a complete cut,
@@ -20,7 +22,9 @@
 //     sweep's border) are triangulated in (u, v) (triangulate_cut.h); the - side gets the same
 //     triangles reversed on its copies, so both pieces are closed and their volumes add up to
 //     the original exactly (to rounding). Where that mirror is impossible (a cut passing twice
-//     through one vertex), each side is triangulated on its own.
+//     through one vertex), each side is triangulated on its own. A cap edge the surface has
+//     too is flipped away, or split by a new cap vertex; a chord between lips that lies on a
+//     surface edge splits that edge.
 // Surface vertices are never moved.
 
 #include "core/mesh/triangle_surface.h"

@@ -8,7 +8,11 @@
 //  - "the cut boundary is not a set of simple loops (non-manifold cut)": a sweep passing
 //    exactly through a surface vertex (an earlier cut vertex), and one passing within rounding
 //    of it;
-//  - partial cuts whose border crosses the surface several times (mouse-like strokes).
+//  - partial cuts whose border crosses the surface several times (mouse-like strokes);
+//  - "edge (a, b): 2 times, opposite 2 times" (a surface that is no longer 2-manifold, the cut
+//    reporting success): a piece of a surface triangle whose corners are all on the cut,
+//    closed a second time by the cap; a flat triangle along an edge, made on both sides of
+//    it; a chord of a partial cut's caps lying on a surface edge.
 // After every cut the surface must be closed and 2-manifold, the pieces' volumes must add up to
 // the volume before, and cut faces must carry their (u, v).
 #include "core/embed/cut_surface.h"
@@ -53,6 +57,15 @@ SurfaceCut cutAndCheck(TriangleSurface& s, const SweepSurface& sweep) {
     if (!uv.isEmpty())
         QTest::qFail(qPrintable(uv), __FILE__, __LINE__);
     return cut;
+}
+
+/// The box [0, 4]^3, 12 triangles, outward.
+TriangleSurface literalBox() {
+    TriangleSurface s;
+    s.positions = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {4, 4, 0}, {0, 0, 4}, {4, 0, 4}, {0, 4, 4}, {4, 4, 4}};
+    s.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                   {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+    return s;
 }
 
 int pieceCount(const TriangleSurface& s) {
@@ -165,6 +178,55 @@ private slots:
         const Vec3 n(1, 2, 3), a = n.unitOrthogonal() * 5, b = n.normalized().cross(a);
         cutAndCheck(s, planeThrough(Vec3(1, 0, 0) + 1e-14 * n, a, b));
         QCOMPARE(pieceCount(s), 2);
+    }
+
+    /// The failure of a mouse stroke in a resection: a stroke whose V-shaped blade narrows and
+    /// shifts as it moves crosses three edges of the box's top face twice each (once with each
+    /// arm). The top face's piece between the arms has only points of the cut for corners and
+    /// is not convex (no centroid fan), so it was triangulated with edges between cut points;
+    /// the cap, triangulated in (u, v), where the cut bends the other way than in the face,
+    /// closed the same points again: a closed pocket of four triangles on an edge between two
+    /// points split from one surface edge ("edge (a, b): 2 times, opposite 2 times").
+    void pieceOfCutPointsBetweenTwoCrossingsOfAnEdge() {
+        TriangleSurface s = literalBox();
+        const SweepSurface sweep = sweepOf({{{-3.6, -1, 6.9}, {0.8, -0.9, 3.4}, {5.1, -1, 6.9}},
+                                            {{1.5, 2, 6.2}, {3.2, 1.9, 2.7}, {4.5, 2, 6.2}},
+                                            {{-1.9, 5.1, 6.7}, {1.1, 5, 3.2}, {4.1, 5, 6.7}}});
+        const SurfaceCut cut = cutAndCheck(s, sweep);
+        QCOMPARE(cut.splitEdges, 3);  // the top face's front, diagonal and back edges, twice each
+        QCOMPARE(cut.loops, 2);
+        QCOMPARE(pieceCount(s), 2);   // the wedge under the V comes off
+    }
+
+    /// A short stab through the edge between two faces of a tetrahedron, ending inside both (a
+    /// partial cut): each face has one point of the cut, the split point on the edge, which
+    /// lies just beyond the edge in both faces' planes (rounding). Each face clipped the ear
+    /// along the whole edge and kept the flat triangle (edge's ends, split point): the two
+    /// flat triangles closed a pocket on the edge ("edge (1, 3): 2 times, opposite 2 times").
+    void stabThroughAnEdge() {
+        TriangleSurface s;
+        s.positions = {{0.113, 0.271, 0.318}, {10.157, 0.782, -0.431}, {5.212, 8.834, 0.219}, {5.018, 2.907, 8.441}};
+        s.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+        const SweepSurface sweep = sweepOf({{{8.003, 1.164, 3.961}, {7.168, 1.634, 3.354}},
+                                            {{8.391, 1.897, 3.993}, {7.555, 2.366, 3.387}}});
+        const SurfaceCut cut = cutAndCheck(s, sweep);
+        QCOMPARE(cut.splitEdges, 1);
+        QCOMPARE(cut.faceVertices, 1);  // the stab's one point on the surface is its own end
+        QCOMPARE(pieceCount(s), 1);
+    }
+
+    /// A V-shaped blade pushed through the box's front face into the top face, stopping there
+    /// (a partial cut): the slit's two lips end on the top face's front edge, next to each
+    /// other, and the chord joining them along the sweep's border was that surface edge, with
+    /// the + cap, the - cap and the two faces on it ("edge (8, 9): 2 times, opposite 2 times").
+    void partialCutWithLipsEndingOnOneEdge() {
+        TriangleSurface s = literalBox();
+        const SweepSurface sweep = sweepOf({{{1, -1, 5}, {2, -1, 3}, {3, -1, 5}}, {{1, 1, 5}, {2, 1, 3}, {3, 1, 5}}});
+        const SurfaceCut cut = cutAndCheck(s, sweep);
+        QCOMPARE(cut.faceVertices, 2);  // the arms' crossings of the top face's front edge
+        QCOMPARE(cut.loops, 1);
+        QVERIFY(cut.capTriangles > 0);
+        QCOMPARE(pieceCount(s), 1);     // a slit, not a separation
     }
 
     /// A stroke whose loop stays inside the body at both ends (the sweep's border runs inside
