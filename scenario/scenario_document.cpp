@@ -131,6 +131,10 @@ CutOptions toCutOptions(const CutSettings& s, const MaterialSpec& material) {
     o.wParticle = s.wParticle;
     o.relaxDamping = s.damping;
     o.relaxRings = s.rings;
+    o.improve = s.improve;
+    o.improveQuality = s.improveQuality;
+    o.improveShortEdge = s.improveShortEdge;
+    o.improveCoarsen = s.improveCoarsen;
     o.density = material.density;
     return o;
 }
@@ -247,7 +251,11 @@ QJsonObject scenarioToJson(const Scenario& s) {
                                       {"w_spring", c.wSpring},
                                       {"w_particle", c.wParticle},
                                       {"damping", c.damping},
-                                      {"rings", c.rings}},
+                                      {"rings", c.rings},
+                                      {"improve", c.improve},
+                                      {"improve_quality", c.improveQuality},
+                                      {"improve_short_edge", c.improveShortEdge},
+                                      {"improve_coarsen", c.improveCoarsen}},
                                      c.extra);
 
     QJsonArray effects;

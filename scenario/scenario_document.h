@@ -28,7 +28,8 @@
 //               {"name": "...", "file": "cut.json"}],                   sweep file, or a file)
 //    "cut_settings": {"method": "hybrid", "triangulation": "enhanced", "d": 0.2,
 //                     "snap": true, "relax_steps": 10, "w_spring": 1, "w_particle": 0.2,
-//                     "damping": 10, "rings": 2},
+//                     "damping": 10, "rings": 2, "improve": true, "improve_quality": 1,
+//                     "improve_short_edge": 0.6, "improve_coarsen": 0.5},
 //    "effects": [{"name": "gravity", "parameters": {"acceleration": [0, 0, -9810]}}, ...],
 //    "simulation": {"integrator": "symplectic-euler", "time_step": "stable", "duration": 0.5},
 //    "expectations": [{"kind": "pieces_at_least", "value": 2}, ...]}
@@ -57,11 +58,22 @@
 //                           quaternion [w, x, y, z] of non-zero length (normalised on use)
 //  sweeps[]                 exactly one of "curves" (m >= 2 curves of n + 1 >= 2 points) and
 //                           "file" (a sweep .json, DESIGN.md "Sweep surface files")
-//  cut_settings             maps to CutOptions (toCutOptions): method hybrid|subdivision,
-//                           triangulation enhanced|standard (enhanced needs hybrid), d in
-//                           [0, 0.5] (fraction of the mean edge length), snap, relax_steps
-//                           [0, 10000], w_spring and w_particle [0, 1e6], damping (0, 1e6] (the
-//                           c of Eq. 2), rings [1, 10] (the relaxation neighbourhood)
+//  cut_settings             maps to CutOptions (toCutOptions; every range is CutLimits'):
+//                           method hybrid|subdivision, triangulation enhanced|standard
+//                           (enhanced needs hybrid), d in [0, 0.5] (fraction of the mean edge
+//                           length), snap, relax_steps [0, 10000], w_spring and w_particle
+//                           [0, 1e6], damping (0, 1e6] (the c of Eq. 2), rings [1, 5] (the
+//                           relaxation neighbourhood); the mesh improvement after every cut
+//                           (step 7 of Tissue::cut, core/cut/improve_mesh.h): improve (bool,
+//                           default true, for either method), improve_quality [0, 4] (tets
+//                           whose radius ratio is below this times the tissue's worst as
+//                           created are improved), improve_short_edge [0, 4] (edges shorter
+//                           than this times its shortest as created are collapsed),
+//                           improve_coarsen [0, 1] (edges shorter than this times its mean
+//                           edge are collapsed where quality allows); 0 turns a criterion off.
+//                           Absent: method hybrid gives triangulation enhanced, snap true and
+//                           relax_steps 10, subdivision standard, false and 0; every other
+//                           field takes CutOptions' default
 //  effects[]                names: deformation, gravity, fixed, tool-contact, damping (each at
 //                           most once); parameters:
 //                             deformation   {"distance": bool, "volume": bool, "area": bool}
@@ -202,6 +214,11 @@ struct CutSettings {
     double wParticle = 0.2; ///< (w_particle)
     double damping = 10.0;  ///< (damping) the c of Eq. 2
     int rings = 2;          ///< (rings)
+    /// The mesh improvement after every cut (CutOptions::improve...; defaults are CutOptions').
+    bool improve = CutOptions{}.improve;                      ///< (improve)
+    double improveQuality = CutOptions{}.improveQuality;     ///< (improve_quality)
+    double improveShortEdge = CutOptions{}.improveShortEdge; ///< (improve_short_edge)
+    double improveCoarsen = CutOptions{}.improveCoarsen;     ///< (improve_coarsen)
     QJsonObject extra;
     bool operator==(const CutSettings&) const = default;
 };

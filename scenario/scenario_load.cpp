@@ -681,6 +681,10 @@ void readCutSettings(Context& c, const QJsonValue& v, CutSettings& out) {
     f.number("w_particle", out.wParticle, {0, CutLimits::kMaxRelaxWeight});
     f.number("damping", out.damping, {0, CutLimits::kMaxRelaxDamping, true});
     f.integer("rings", out.rings, 1, CutLimits::kMaxRelaxRings);
+    f.boolean("improve", out.improve);
+    f.number("improve_quality", out.improveQuality, {0, CutLimits::kMaxImproveQuality});
+    f.number("improve_short_edge", out.improveShortEdge, {0, CutLimits::kMaxImproveShortEdge});
+    f.number("improve_coarsen", out.improveCoarsen, {0, CutLimits::kMaxImproveCoarsen});
     out.extra = f.unknown();
 }
 

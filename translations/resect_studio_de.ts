@@ -424,6 +424,51 @@
         <translation>Relaxationsringe</translation>
     </message>
     <message>
+        <location line="+4"/>
+        <source>Mesh improvement</source>
+        <translation>Netzverbesserung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Improve mesh after cut</source>
+        <translation>Netz nach dem Schnitt verbessern</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>After every cut, improve the tets around it: collapse short edges and move nodes of bad tets, measured against the tissue as created</source>
+        <translation>Nach jedem Schnitt die Tetraeder um ihn verbessern: kurze Kanten zusammenziehen und Knoten schlechter Tetraeder verschieben, gemessen am Gewebe im Ausgangszustand</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Tets whose radius ratio is below this factor times the worst of the tissue as created are improved (0: off; from 0 to %1)</source>
+        <translation>Tetraeder, deren Radienverhältnis unter diesem Faktor mal dem schlechtesten des Gewebes im Ausgangszustand liegt, werden verbessert (0: aus; von 0 bis %1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Quality factor</source>
+        <translation>Qualitätsfaktor</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Edges shorter than this factor times the shortest edge of the tissue as created are collapsed (0: off; from 0 to %1)</source>
+        <translation>Kanten, die kürzer als dieser Faktor mal die kürzeste Kante des Gewebes im Ausgangszustand sind, werden zusammengezogen (0: aus; von 0 bis %1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Short-edge factor</source>
+        <translation>Faktor für kurze Kanten</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Edges shorter than this factor times the mean edge length (the unit of d) are collapsed where quality allows, so that repeated cuts do not keep adding tets (0: off; from 0 to %1)</source>
+        <translation>Kanten, die kürzer als dieser Faktor mal die mittlere Kantenlänge (die Einheit von d) sind, werden zusammengezogen, wo die Qualität es erlaubt, damit wiederholte Schnitte nicht immer mehr Tetraeder erzeugen (0: aus; von 0 bis %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Coarsening factor</source>
+        <translation>Vergröberungsfaktor</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>Preview</source>
         <translation>Vorschau</translation>
@@ -465,8 +510,38 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Collapsed edges</source>
+        <translation>Zusammengezogene Kanten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Smoothed nodes</source>
+        <translation>Geglättete Knoten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Removed tets</source>
+        <translation>Entfernte Tetraeder</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Pieces</source>
         <translation>Teile</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resected chips</source>
+        <translation>Resezierte Späne</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resected volume (mm³)</source>
+        <translation>Reseziertes Volumen (mm³)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resected mass (g)</source>
+        <translation>Resezierte Masse (g)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -495,6 +570,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Mesh improvement (ms)</source>
+        <translation>Netzverbesserung (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Total (ms)</source>
         <translation>Gesamt (ms)</translation>
     </message>
@@ -509,7 +589,7 @@
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+75"/>
         <source>The last edit was undone: %1</source>
         <translation>Die letzte Änderung wurde rückgängig gemacht: %1</translation>
     </message>
@@ -519,7 +599,7 @@
         <translation>Das Gewebe oder seine Schnitte scheitern: %1</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+61"/>
         <source>No pending cut. Draw a sweep or record a stroke to preview a cut.</source>
         <translation>Kein ausstehender Schnitt. Zeichnen Sie eine Schnittfläche oder zeichnen Sie eine Schnittbewegung auf, um eine Vorschau des Schnitts zu sehen.</translation>
     </message>
@@ -544,7 +624,7 @@
         <translation>%1 (%2 abgelehnt)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+15"/>
         <location line="+3"/>
         <source>%1 / %2 / %3</source>
         <translation>%1 / %2 / %3</translation>
@@ -1028,6 +1108,44 @@
     </message>
 </context>
 <context>
+    <name>resect::QualityCurve</name>
+    <message>
+        <location filename="../widgets/quality_curve.cpp" line="+128"/>
+        <source>The tissue as created: worst radius ratio %1</source>
+        <translation>Das Gewebe im Ausgangszustand: schlechtestes Radienverhältnis %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>After cut %1: worst radius ratio %2 (%3 × the input&apos;s)</source>
+        <translation>Nach Schnitt %1: schlechtestes Radienverhältnis %2 (%3 × das der Eingabe)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Pending: not applied yet</source>
+        <translation>Ausstehend: noch nicht angewendet</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>Cut</source>
+        <translation>Schnitt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Worst radius ratio / input&apos;s</source>
+        <translation>Schlechtestes Radienverhältnis / das der Eingabe</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>No tissue.</source>
+        <translation>Kein Gewebe.</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>No cuts yet.</source>
+        <translation>Noch keine Schnitte.</translation>
+    </message>
+</context>
+<context>
     <name>resect::QualityHistogram</name>
     <message>
         <location filename="../widgets/quality_histogram.cpp" line="+173"/>
@@ -1066,7 +1184,7 @@
 <context>
     <name>resect::QualityPanel</name>
     <message>
-        <location filename="../widgets/quality_panel.cpp" line="+44"/>
+        <location filename="../widgets/quality_panel.cpp" line="+45"/>
         <source>Display</source>
         <translation>Darstellung</translation>
     </message>
@@ -1172,6 +1290,16 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>The worst radius ratio of the tissue after each cut, relative to the tissue as created (a pending cut: hollow)</source>
+        <translation>Das schlechteste Radienverhältnis des Gewebes nach jedem Schnitt, relativ zum Gewebe im Ausgangszustand (ein ausstehender Schnitt: hohl)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Per cut</source>
+        <translation>Je Schnitt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Tet</source>
         <translation>Tetraeder</translation>
     </message>
@@ -1242,7 +1370,7 @@
 <context>
     <name>resect::ScenarioCommand</name>
     <message>
-        <location filename="../widgets/scenario_commands.cpp" line="+77"/>
+        <location filename="../widgets/scenario_commands.cpp" line="+81"/>
         <source>Change cut settings</source>
         <translation>Schnitteinstellungen ändern</translation>
     </message>

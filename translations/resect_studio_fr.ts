@@ -424,6 +424,51 @@
         <translation>Anneaux de relaxation</translation>
     </message>
     <message>
+        <location line="+4"/>
+        <source>Mesh improvement</source>
+        <translation>Amélioration du maillage</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Improve mesh after cut</source>
+        <translation>Améliorer le maillage après la coupe</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>After every cut, improve the tets around it: collapse short edges and move nodes of bad tets, measured against the tissue as created</source>
+        <translation>Après chaque coupe, améliorer les tétraèdres autour d&apos;elle : contracter les arêtes courtes et déplacer les nœuds des mauvais tétraèdres, par rapport au tissu tel que créé</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Tets whose radius ratio is below this factor times the worst of the tissue as created are improved (0: off; from 0 to %1)</source>
+        <translation>Les tétraèdres dont le rapport des rayons est inférieur à ce facteur fois le pire du tissu tel que créé sont améliorés (0 : désactivé ; de 0 à %1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Quality factor</source>
+        <translation>Facteur de qualité</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Edges shorter than this factor times the shortest edge of the tissue as created are collapsed (0: off; from 0 to %1)</source>
+        <translation>Les arêtes plus courtes que ce facteur fois l&apos;arête la plus courte du tissu tel que créé sont contractées (0 : désactivé ; de 0 à %1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Short-edge factor</source>
+        <translation>Facteur des arêtes courtes</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Edges shorter than this factor times the mean edge length (the unit of d) are collapsed where quality allows, so that repeated cuts do not keep adding tets (0: off; from 0 to %1)</source>
+        <translation>Les arêtes plus courtes que ce facteur fois la longueur moyenne des arêtes (l&apos;unité de d) sont contractées là où la qualité le permet, pour que des coupes répétées n&apos;ajoutent pas sans cesse des tétraèdres (0 : désactivé ; de 0 à %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Coarsening factor</source>
+        <translation>Facteur de déraffinement</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>Preview</source>
         <translation>Aperçu</translation>
@@ -465,8 +510,38 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Collapsed edges</source>
+        <translation>Arêtes contractées</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Smoothed nodes</source>
+        <translation>Nœuds lissés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Removed tets</source>
+        <translation>Tétraèdres supprimés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Pieces</source>
         <translation>Morceaux</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resected chips</source>
+        <translation>Copeaux réséqués</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resected volume (mm³)</source>
+        <translation>Volume réséqué (mm³)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resected mass (g)</source>
+        <translation>Masse réséquée (g)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -495,6 +570,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Mesh improvement (ms)</source>
+        <translation>Amélioration du maillage (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Total (ms)</source>
         <translation>Total (ms)</translation>
     </message>
@@ -509,7 +589,7 @@
         <translation>A&amp;bandonner</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+75"/>
         <source>The last edit was undone: %1</source>
         <translation>La dernière modification a été annulée : %1</translation>
     </message>
@@ -519,7 +599,7 @@
         <translation>Le tissu ou ses coupes échouent : %1</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+61"/>
         <source>No pending cut. Draw a sweep or record a stroke to preview a cut.</source>
         <translation>Aucune coupe en attente. Dessinez une surface de balayage ou enregistrez un geste de coupe pour afficher l&apos;aperçu d&apos;une coupe.</translation>
     </message>
@@ -544,7 +624,7 @@
         <translation>%1 (%2 refusés)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+15"/>
         <location line="+3"/>
         <source>%1 / %2 / %3</source>
         <translation>%1 / %2 / %3</translation>
@@ -1028,6 +1108,44 @@
     </message>
 </context>
 <context>
+    <name>resect::QualityCurve</name>
+    <message>
+        <location filename="../widgets/quality_curve.cpp" line="+128"/>
+        <source>The tissue as created: worst radius ratio %1</source>
+        <translation>Le tissu tel que créé : pire rapport des rayons %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>After cut %1: worst radius ratio %2 (%3 × the input&apos;s)</source>
+        <translation>Après la coupe %1 : pire rapport des rayons %2 (%3 × celui de l&apos;entrée)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Pending: not applied yet</source>
+        <translation>En attente : pas encore appliquée</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>Cut</source>
+        <translation>Coupe</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Worst radius ratio / input&apos;s</source>
+        <translation>Pire rapport des rayons / celui de l&apos;entrée</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>No tissue.</source>
+        <translation>Aucun tissu.</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>No cuts yet.</source>
+        <translation>Aucune coupe pour l&apos;instant.</translation>
+    </message>
+</context>
+<context>
     <name>resect::QualityHistogram</name>
     <message>
         <location filename="../widgets/quality_histogram.cpp" line="+173"/>
@@ -1066,7 +1184,7 @@
 <context>
     <name>resect::QualityPanel</name>
     <message>
-        <location filename="../widgets/quality_panel.cpp" line="+44"/>
+        <location filename="../widgets/quality_panel.cpp" line="+45"/>
         <source>Display</source>
         <translation>Affichage</translation>
     </message>
@@ -1172,6 +1290,16 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>The worst radius ratio of the tissue after each cut, relative to the tissue as created (a pending cut: hollow)</source>
+        <translation>Le pire rapport des rayons du tissu après chaque coupe, relatif au tissu tel que créé (une coupe en attente : creuse)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Per cut</source>
+        <translation>Par coupe</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Tet</source>
         <translation>Tétraèdre</translation>
     </message>
@@ -1242,7 +1370,7 @@
 <context>
     <name>resect::ScenarioCommand</name>
     <message>
-        <location filename="../widgets/scenario_commands.cpp" line="+77"/>
+        <location filename="../widgets/scenario_commands.cpp" line="+81"/>
         <source>Change cut settings</source>
         <translation>Modifier les paramètres de coupe</translation>
     </message>

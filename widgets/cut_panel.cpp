@@ -86,6 +86,35 @@ CutPanel::CutPanel(ScenarioDocument& document, TissueSession& session, CutPrevie
     form->addRow(tr("Relaxation rings"), m_rings);
     layout->addWidget(settings);
 
+    // Step 7 of a cut (Tissue::cut, core/cut/improve_mesh.h): the ranges are CutLimits'.
+    auto* improvement = new QGroupBox(tr("Mesh improvement"), this);
+    auto* improveForm = new QFormLayout(improvement);
+    m_improve = new QCheckBox(tr("Improve mesh after cut"));
+    m_improve->setObjectName(QStringLiteral("improve"));
+    m_improve->setToolTip(tr("After every cut, improve the tets around it: collapse short edges and "
+                             "move nodes of bad tets, measured against the tissue as created"));
+    improveForm->addRow(QString(), m_improve);
+    m_improveQuality = numberBox(QStringLiteral("improveQuality"), 0.0, CutLimits::kMaxImproveQuality, 0.05, 2);
+    m_improveQuality->setToolTip(
+        tr("Tets whose radius ratio is below this factor times the worst of the tissue as created "
+           "are improved (0: off; from 0 to %1)")
+            .arg(number(CutLimits::kMaxImproveQuality)));
+    improveForm->addRow(tr("Quality factor"), m_improveQuality);
+    m_improveShortEdge = numberBox(QStringLiteral("improveShortEdge"), 0.0, CutLimits::kMaxImproveShortEdge, 0.05, 2);
+    m_improveShortEdge->setToolTip(
+        tr("Edges shorter than this factor times the shortest edge of the tissue as created are "
+           "collapsed (0: off; from 0 to %1)")
+            .arg(number(CutLimits::kMaxImproveShortEdge)));
+    improveForm->addRow(tr("Short-edge factor"), m_improveShortEdge);
+    m_improveCoarsen = numberBox(QStringLiteral("improveCoarsen"), 0.0, CutLimits::kMaxImproveCoarsen, 0.05, 2);
+    m_improveCoarsen->setToolTip(
+        tr("Edges shorter than this factor times the mean edge length (the unit of d) are "
+           "collapsed where quality allows, so that repeated cuts do not keep adding tets (0: off; "
+           "from 0 to %1)")
+            .arg(number(CutLimits::kMaxImproveCoarsen)));
+    improveForm->addRow(tr("Coarsening factor"), m_improveCoarsen);
+    layout->addWidget(improvement);
+
     auto* previewBox = new QGroupBox(tr("Preview"), this);
     auto* previewForm = new QFormLayout(previewBox);
     m_previewStatus = new QLabel;
@@ -99,12 +128,19 @@ CutPanel::CutPanel(ScenarioDocument& document, TissueSession& session, CutPrevie
     addValue(previewForm, QStringLiteral("snapped_nodes"), tr("Snapped nodes"));
     addValue(previewForm, QStringLiteral("decomposed_tets"), tr("Decomposed tets"));
     addValue(previewForm, QStringLiteral("separated_tets"), tr("Separated tets"));
+    addValue(previewForm, QStringLiteral("collapsed_edges"), tr("Collapsed edges"));
+    addValue(previewForm, QStringLiteral("smoothed_nodes"), tr("Smoothed nodes"));
+    addValue(previewForm, QStringLiteral("removed_tets"), tr("Removed tets"));
     addValue(previewForm, QStringLiteral("pieces"), tr("Pieces"));
+    addValue(previewForm, QStringLiteral("chips"), tr("Resected chips"));
+    addValue(previewForm, QStringLiteral("resected_volume"), tr("Resected volume (mm³)"));
+    addValue(previewForm, QStringLiteral("resected_mass"), tr("Resected mass (g)"));
     addValue(previewForm, QStringLiteral("min_radius_ratio"), tr("Min radius ratio"));
     addValue(previewForm, QStringLiteral("stable_dt"), tr("Stable time step (s)"));
     addValue(previewForm, QStringLiteral("stage_ms"), tr("Intersect / select / decompose (ms)"));
     addValue(previewForm, QStringLiteral("relax_ms"), tr("Snap / relax / update (ms)"));
     addValue(previewForm, QStringLiteral("surface_ms"), tr("Surface cut (ms)"));
+    addValue(previewForm, QStringLiteral("improve_ms"), tr("Mesh improvement (ms)"));
     addValue(previewForm, QStringLiteral("total_ms"), tr("Total (ms)"));
     auto* buttons = new QHBoxLayout;
     m_apply = new QPushButton(tr("&Apply cut"));
@@ -153,6 +189,22 @@ CutPanel::CutPanel(ScenarioDocument& document, TissueSession& session, CutPrevie
     connect(m_rings, &QSpinBox::valueChanged, this, [this](int v) {
         if (!m_syncing)
             m_document.setRings(v);
+    });
+    connect(m_improve, &QCheckBox::toggled, this, [this](bool on) {
+        if (!m_syncing)
+            m_document.setImprove(on);
+    });
+    connect(m_improveQuality, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        if (!m_syncing)
+            m_document.setImproveQuality(v);
+    });
+    connect(m_improveShortEdge, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        if (!m_syncing)
+            m_document.setImproveShortEdge(v);
+    });
+    connect(m_improveCoarsen, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        if (!m_syncing)
+            m_document.setImproveCoarsen(v);
     });
     connect(m_apply, &QPushButton::clicked, this, &CutPanel::apply);
     connect(m_discard, &QPushButton::clicked, &m_preview, &CutPreview::discard);
@@ -216,6 +268,12 @@ void CutPanel::syncFromDocument() {
     m_wParticle->setValue(s.wParticle);
     m_relaxDamping->setValue(s.damping);
     m_rings->setValue(s.rings);
+    m_improve->setChecked(s.improve);
+    m_improveQuality->setValue(s.improveQuality);
+    m_improveShortEdge->setValue(s.improveShortEdge);
+    m_improveCoarsen->setValue(s.improveCoarsen);
+    for (QDoubleSpinBox* factor : {m_improveQuality, m_improveShortEdge, m_improveCoarsen})
+        factor->setEnabled(s.improve);
     m_syncing = false;
 }
 
@@ -255,7 +313,15 @@ void CutPanel::updatePreview() {
         tr("%1 (%2 refused)").arg(c.snappedNodes).arg(c.refusedSnaps));
     set(QStringLiteral("decomposed_tets"), QString::number(c.decomposedTets));
     set(QStringLiteral("separated_tets"), QString::number(c.separatedTets));
+    set(QStringLiteral("collapsed_edges"), QString::number(preview->collapsedEdges));
+    set(QStringLiteral("smoothed_nodes"), QString::number(preview->smoothedNodes));
+    set(QStringLiteral("removed_tets"), QString::number(preview->removedTets));
     set(QStringLiteral("pieces"), beforeAfter(QString::number(current->pieces), QString::number(preview->pieces)));
+    const Tissue& was = current->tissue;
+    const Tissue& will = preview->tissue;
+    set(QStringLiteral("chips"), beforeAfter(QString::number(was.chips().size()), QString::number(will.chips().size())));
+    set(QStringLiteral("resected_volume"), beforeAfter(number(was.resectedVolume()), number(will.resectedVolume())));
+    set(QStringLiteral("resected_mass"), beforeAfter(number(was.resectedMass()), number(will.resectedMass())));
     set(QStringLiteral("min_radius_ratio"),
         beforeAfter(number(current->quality.minRadiusRatio), number(preview->quality.minRadiusRatio)));
     set(QStringLiteral("stable_dt"), beforeAfter(number(current->stableDt), number(preview->stableDt)));
@@ -266,7 +332,8 @@ void CutPanel::updatePreview() {
                                         .arg(number(c.timeMs.snap, 2), number(c.timeMs.relax, 2),
                                              number(c.timeMs.update, 2)));
     set(QStringLiteral("surface_ms"), number(preview->surfaceCutMs, 2));
-    set(QStringLiteral("total_ms"), number(c.timeMs.total + preview->surfaceCutMs, 3));
+    set(QStringLiteral("improve_ms"), number(preview->improveMs, 2));
+    set(QStringLiteral("total_ms"), number(preview->totalMs, 3));
 }
 
 void CutPanel::apply() {

@@ -1,9 +1,11 @@
 #pragma once
 // CutPanel: the cut method and its parameters (the document's cut settings: method, face
 // triangulation, the cut-node threshold d, snapping, relaxation weights, steps, damping and
-// rings) and the live preview of the pending cut: its counts, the quality and stable time
-// step before and after, and the time of each stage; Apply adds the cut to the document,
-// Discard drops it.
+// rings; the mesh improvement after the cut, on or off, and its three factors, whose spin
+// boxes take CutLimits' ranges) and the live preview of the pending cut: its counts (the
+// improvement's collapsed edges, smoothed nodes and removed tets among them), the pieces and
+// the resected chips (count, volume, mass), the quality and stable time step before and after,
+// and the time of each stage; Apply adds the cut to the document, Discard drops it.
 //
 // Edits go through the ScenarioDocument (undoable; consecutive changes of one number merge
 // into one undo step); the panel follows the document on undo and redo. The pending cut and
@@ -39,8 +41,10 @@ public:
     CutPanel(ScenarioDocument& document, TissueSession& session, CutPreview& preview, QWidget* parent = nullptr);
 
     /// The preview's figures as shown, by key ("tets", "added_tets", "cut_edges",
-    /// "cut_nodes", "snapped_nodes", "decomposed_tets", "separated_tets", "pieces",
-    /// "min_radius_ratio", "stable_dt", "total_ms"); empty when there is no preview.
+    /// "cut_nodes", "snapped_nodes", "decomposed_tets", "separated_tets", "collapsed_edges",
+    /// "smoothed_nodes", "removed_tets", "pieces", "chips", "resected_volume",
+    /// "resected_mass", "min_radius_ratio", "stable_dt", "stage_ms", "relax_ms", "surface_ms",
+    /// "improve_ms", "total_ms"); empty when there is no preview.
     QString previewValue(const QString& key) const;
     /// The notice line's text (empty when there is nothing to report).
     QString notice() const;
@@ -70,6 +74,10 @@ private:
     QDoubleSpinBox* m_wParticle = nullptr;
     QDoubleSpinBox* m_relaxDamping = nullptr;
     QSpinBox* m_rings = nullptr;
+    QCheckBox* m_improve = nullptr;
+    QDoubleSpinBox* m_improveQuality = nullptr;
+    QDoubleSpinBox* m_improveShortEdge = nullptr;
+    QDoubleSpinBox* m_improveCoarsen = nullptr;
 
     QLabel* m_notice = nullptr;
     QLabel* m_previewStatus = nullptr;

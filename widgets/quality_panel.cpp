@@ -2,6 +2,7 @@
 
 #include "core/mesh/quality.h"
 #include "widgets/camera_ray.h"
+#include "widgets/quality_curve.h"
 #include "widgets/quality_histogram.h"
 #include "widgets/quality_summary_table.h"
 #include "widgets/tet_inspector.h"
@@ -120,6 +121,10 @@ QualityPanel::QualityPanel(QWidget* parent) : QWidget(parent) {
     m_tabs->addTab(histogramPage, tr("Histogram"));
     m_table = new QualitySummaryTable(m_tabs);
     m_tabs->addTab(m_table, tr("Summary"));
+    m_curve = new QualityCurve(m_tabs);
+    m_curve->setToolTip(tr("The worst radius ratio of the tissue after each cut, relative to the "
+                           "tissue as created (a pending cut: hollow)"));
+    m_tabs->addTab(m_curve, tr("Per cut"));
     m_inspector = new TetInspector(m_tabs);
     m_tabs->addTab(m_inspector, tr("Tet"));
     layout->addWidget(m_tabs, 1);
@@ -361,6 +366,14 @@ void QualityPanel::clearBefore() {
 void QualityPanel::clearAfter() {
     m_histogram->clearSeries(QualityHistogram::Series::After);
     m_table->clearSummary(QualitySummaryTable::After);
+}
+
+void QualityPanel::setCutCurve(double input, std::vector<double> afterCuts, double pending) {
+    m_curve->setValues(input, std::move(afterCuts), pending);
+}
+
+void QualityPanel::clearCutCurve() {
+    m_curve->clear();
 }
 
 void QualityPanel::inspectTet(const TetMesh& mesh, int tet, Scheme scheme) {

@@ -3,20 +3,21 @@
 // VtkViewport: display mode, overlay measure with its colour range (and an "auto" button),
 // the "worse than" filter, a clipping plane moved along x, y, z or the view direction, and
 // a tet-inspection mode. It embeds, in tabs below the controls, the QualityHistogram, the
-// QualitySummaryTable and the TetInspector (also reachable through accessors, so the main
-// window may re-parent them elsewhere), and owns the viewport's QualityLegend and the
-// TetPicker tool.
+// QualitySummaryTable, the QualityCurve (the worst tet over the scenario's cuts) and the
+// TetInspector (also reachable through accessors, so the main window may re-parent them
+// elsewhere), and owns the viewport's QualityLegend and the TetPicker tool.
 //
 // The panel never owns a mesh. It applies its settings to the attached viewport's
 // TetMeshActor (which keeps them across setMesh) and is given the data to summarise by
-// setters: setBeforeMesh/setAfterMesh for the histogram and table, inspectTet (or a mesh
-// provider, setMeshProvider) for the inspector. After the viewport's mesh changes, call
-// meshChanged() so that the legend and the clipping plane follow the new bounds.
+// setters: setBeforeMesh/setAfterMesh for the histogram and table, setCutCurve for the curve,
+// inspectTet (or a mesh provider, setMeshProvider) for the inspector. After the viewport's
+// mesh changes, call meshChanged() so that the legend and the clipping plane follow the new
+// bounds.
 //
 // objectNames of the controls: "displayMode", "overlayMeasure", "rangeMin", "rangeMax",
 // "rangeAuto", "filterEnabled", "filterThreshold", "clipEnabled", "clipAxis",
 // "clipPosition", "pickEnabled", "histogramLogScale", "qualityTabs"; embedded widgets:
-// "qualityHistogram", "qualitySummaryTable", "tetInspector".
+// "qualityHistogram", "qualitySummaryTable", "qualityCurve", "tetInspector".
 
 #include "core/cut/cut_types.h"
 #include "core/mesh/tet_mesh.h"
@@ -29,6 +30,8 @@
 #include <QWidget>
 
 #include <functional>
+#include <limits>
+#include <vector>
 
 class QCheckBox;
 class QComboBox;
@@ -39,6 +42,7 @@ class QTabWidget;
 
 namespace resect {
 
+class QualityCurve;
 class QualityHistogram;
 class QualitySummaryTable;
 class TetInspector;
@@ -69,6 +73,12 @@ public:
     void setAfterMesh(const TetMesh& mesh, double stableDt);
     void clearBefore();
     void clearAfter();
+    /// The curve of the worst tet over the cuts (QualityCurve::setValues): the worst radius
+    /// ratio of the tissue as created, after each applied cut, and after a pending cut (NaN:
+    /// none).
+    void setCutCurve(double input, std::vector<double> afterCuts,
+                     double pending = std::numeric_limits<double>::quiet_NaN());
+    void clearCutCurve();
 
     /// Shows one tet in the inspector (-1 clears it).
     void inspectTet(const TetMesh& mesh, int tet, Scheme scheme);
@@ -78,6 +88,7 @@ public:
 
     QualityHistogram* histogram() const { return m_histogram; }
     QualitySummaryTable* summaryTable() const { return m_table; }
+    QualityCurve* cutCurve() const { return m_curve; }
     TetInspector* inspector() const { return m_inspector; }
     const QualityLegend& legend() const { return m_legend; }
     TetPicker* picker() { return &m_picker; }
@@ -131,6 +142,7 @@ private:
     QTabWidget* m_tabs = nullptr;
     QualityHistogram* m_histogram = nullptr;
     QualitySummaryTable* m_table = nullptr;
+    QualityCurve* m_curve = nullptr;
     TetInspector* m_inspector = nullptr;
     QualityMeasure m_thresholdMeasure = QualityMeasure::RadiusRatio;
 };

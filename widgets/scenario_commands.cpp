@@ -23,11 +23,15 @@ bool isNumeric(CutField field) {
     case CutField::WParticle:
     case CutField::Damping:
     case CutField::Rings:
+    case CutField::ImproveQuality:
+    case CutField::ImproveShortEdge:
+    case CutField::ImproveCoarsen:
         return true;
     case CutField::All:
     case CutField::Method:
     case CutField::Triangulation:
     case CutField::Snap:
+    case CutField::Improve:
         return false;
     }
     return false;

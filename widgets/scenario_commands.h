@@ -29,11 +29,12 @@ private:
 
 /// One cut setting (CutSettings), or all of them.
 enum class CutField { All, Method, Triangulation, D, Snap, RelaxSteps, WSpring, WParticle, Damping,
-                      Rings };
+                      Rings, Improve, ImproveQuality, ImproveShortEdge, ImproveCoarsen };
 
 /// Replaces the cut settings. Consecutive commands for the same numeric field (d, relax
-/// steps, the weights, damping, rings) merge into one undo step, so dragging the d slider is
-/// one step; a merge that brings the value back to where it started leaves no step at all.
+/// steps, the weights, damping, rings, the improvement's three factors) merge into one undo
+/// step, so dragging the d slider is one step; a merge that brings the value back to where it
+/// started leaves no step at all.
 class SetCutSettingsCommand : public ScenarioCommand {
 public:
     SetCutSettingsCommand(ScenarioDocument& document, CutSettings before, CutSettings after,

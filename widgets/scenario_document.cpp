@@ -469,6 +469,30 @@ void ScenarioDocument::setRings(int rings) {
     pushCutSettings(s, static_cast<int>(CutField::Rings));
 }
 
+void ScenarioDocument::setImprove(bool improve) {
+    CutSettings s = m_scenario.cut;
+    s.improve = improve;
+    pushCutSettings(s, static_cast<int>(CutField::Improve));
+}
+
+void ScenarioDocument::setImproveQuality(double factor) {
+    CutSettings s = m_scenario.cut;
+    s.improveQuality = factor;
+    pushCutSettings(s, static_cast<int>(CutField::ImproveQuality));
+}
+
+void ScenarioDocument::setImproveShortEdge(double factor) {
+    CutSettings s = m_scenario.cut;
+    s.improveShortEdge = factor;
+    pushCutSettings(s, static_cast<int>(CutField::ImproveShortEdge));
+}
+
+void ScenarioDocument::setImproveCoarsen(double factor) {
+    CutSettings s = m_scenario.cut;
+    s.improveCoarsen = factor;
+    pushCutSettings(s, static_cast<int>(CutField::ImproveCoarsen));
+}
+
 void ScenarioDocument::addStroke(const Stroke& stroke, int index) {
     m_undo.push(new AddStrokeCommand(*this, stroke, index));
 }

@@ -164,6 +164,12 @@ public:
     void setWParticle(double w);
     void setRelaxDamping(double damping);
     void setRings(int rings);
+    /// The mesh improvement after every cut (CutSettings::improve...; the factors' ranges are
+    /// CutLimits').
+    void setImprove(bool improve);
+    void setImproveQuality(double factor);
+    void setImproveShortEdge(double factor);
+    void setImproveCoarsen(double factor);
 
     /// Inserts at `index` (-1 or out of range: appends).
     void addStroke(const Stroke& stroke, int index = -1);

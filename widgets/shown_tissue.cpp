@@ -8,6 +8,8 @@
 
 #include <QPointer>
 
+#include <limits>
+
 #include <vtkActor.h>
 
 namespace resect {
@@ -138,6 +140,16 @@ void ShownTissue::updateComparison() {
         m_quality.setAfterMesh(after->mesh(), after->stableDt);
     else
         m_quality.clearAfter();
+    // The worst tet after each of current's cuts, and after the pending one (a preview on
+    // current adds exactly one cut to current's; one of an older current is not shown).
+    if (current && !current->tissue.empty()) {
+        const bool pending = preview && preview->worstRatios.size() == current->worstRatios.size() + 1;
+        m_quality.setCutCurve(current->tissue.inputWorstRatio(), current->worstRatios,
+                              pending ? preview->worstRatios.back()
+                                      : std::numeric_limits<double>::quiet_NaN());
+    } else {
+        m_quality.clearCutCurve();
+    }
 }
 
 } // namespace resect

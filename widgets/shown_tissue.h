@@ -9,8 +9,9 @@
 //  - the viewport (STYLE.md 8): setTetMesh with the tissue's schemes when the topology or the
 //    source changes, TetMeshActor::updatePositions for simulation steps; the surface follows;
 //  - the quality panel: its mesh provider (the tet inspector looks up picked tets in the
-//    mesh on show), meshChanged() after a rebuild, and the before/after comparison (current
-//    and its preview while a cut is pending, else the uncut and the current tissue).
+//    mesh on show), meshChanged() after a rebuild, the before/after comparison (current
+//    and its preview while a cut is pending, else the uncut and the current tissue) and the
+//    curve of the worst tet over the current tissue's cuts (and the pending one's).
 // A new document or tissue is framed once it is shown (frameNext(), framed()).
 
 #include <QObject>

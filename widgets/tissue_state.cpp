@@ -2,7 +2,9 @@
 
 #include "core/mesh/stable_time_step.h"
 
+#include <algorithm>
 #include <atomic>
+#include <limits>
 
 namespace resect {
 
@@ -27,7 +29,20 @@ bool sameCutOptions(const CutOptions& a, const CutOptions& b) {
            a.snapQualityFloor == b.snapQualityFloor && a.relaxSteps == b.relaxSteps &&
            a.wSpring == b.wSpring && a.wParticle == b.wParticle && a.relaxRings == b.relaxRings &&
            a.relaxDamping == b.relaxDamping && a.density == b.density &&
+           a.improve == b.improve && a.improveQuality == b.improveQuality &&
+           a.improveShortEdge == b.improveShortEdge && a.improveCoarsen == b.improveCoarsen &&
            a.minEdgeFraction == b.minEdgeFraction;
+}
+
+double worstRadiusRatio(const TetMesh& mesh) {
+    if (mesh.tetCount() == 0)
+        return std::numeric_limits<double>::quiet_NaN();
+    double worst = std::numeric_limits<double>::infinity();
+    for (int t = 0; t < mesh.tetCount(); ++t) {
+        const Tet& q = mesh.tet(t);
+        worst = std::min(worst, radiusRatio(mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3])));
+    }
+    return worst;
 }
 
 int appendedCuts(const AppliedCuts& earlier, const AppliedCuts& later) {
@@ -56,6 +71,12 @@ Status TissueState::cut(const SweepSurface& sweep, const CutOptions& options,
     cutStats += result.tets;
     surfaceCutMs += result.surfaceMs;
     surfaceCapTriangles += result.surface.surface.capTriangles;
+    collapsedEdges += result.collapsedEdges;
+    smoothedNodes += result.smoothedNodes;
+    removedTets += result.removedTets;
+    improveMs += result.improveMs;
+    totalMs += result.totalMs;
+    worstRatios.push_back(worstRadiusRatio(tissue.mesh()));
     return Status::success();
 }
 
@@ -63,6 +84,8 @@ void TissueState::clearCutFigures() {
     cutStats = {};
     surfaceCutMs = 0;
     surfaceCapTriangles = 0;
+    collapsedEdges = smoothedNodes = removedTets = 0;
+    improveMs = totalMs = 0;
 }
 
 void TissueState::settle() {

@@ -43,6 +43,11 @@ bool sameCutOptions(const CutOptions& a, const CutOptions& b);
 /// or changed, the options changed under existing cuts, or another base).
 int appendedCuts(const AppliedCuts& earlier, const AppliedCuts& later);
 
+/// The smallest radius ratio over the mesh's tets in the reference configuration (as
+/// summarizeQuality's minRadiusRatio, in one pass without the other measures); NaN for a
+/// mesh without tets.
+double worstRadiusRatio(const TetMesh& mesh);
+
 /// One state of the tissue. Copy it to derive another (explicitly: the Tissue copies deeply).
 struct TissueState {
     Tissue tissue;       ///< mesh, spatial index, surface (following the tets), schemes
@@ -53,6 +58,15 @@ struct TissueState {
     CutStats cutStats;           ///< summed over the cuts since base (a preview: the pending cut)
     double surfaceCutMs = 0;     ///< embedded-surface update, cut and re-binding, summed likewise
     int surfaceCapTriangles = 0; ///< cap triangles those cuts added to the surface
+    /// The mesh improvement after those cuts (TissueCut, step 7 of Tissue::cut), summed likewise:
+    /// edges collapsed, nodes smoothed, tets the collapses removed, and its time.
+    int collapsedEdges = 0, smoothedNodes = 0, removedTets = 0;
+    double improveMs = 0;
+    double totalMs = 0;          ///< whole cuts, every stage (TissueCut::totalMs), summed likewise
+    /// The smallest radius ratio (3 r_in / R_circ, reference configuration) of the tet mesh
+    /// after each cut since base, in order (not cleared by clearCutFigures: a preview's ends
+    /// with its pending cut). With tissue.inputWorstRatio(), the curve of the quality dock.
+    std::vector<double> worstRatios;
     QString tissueName;
 
     const TetMesh& mesh() const { return tissue.mesh(); }
@@ -65,8 +79,8 @@ struct TissueState {
     /// state share their options: other options than the recorded ones are refused.
     Status cut(const SweepSurface& sweep, const CutOptions& options,
                const CutStageCallback& proceed = {});
-    /// Zeroes the figures of the cuts (cutStats, surfaceCutMs, surfaceCapTriangles), e.g. for a
-    /// preview that reports its pending cut alone.
+    /// Zeroes the figures of the cuts (cutStats, the surface's and the improvement's counts and
+    /// times), e.g. for a preview that reports its pending cut alone.
     void clearCutFigures();
     /// Before publishing: the surface follows the tets (Tissue::updateSurface) and the measures
     /// (quality, stable time step, pieces) are taken.

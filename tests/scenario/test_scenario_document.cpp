@@ -1,7 +1,9 @@
 // The scenario document: load, save and load gives an equal document, unknown fields
 // included; every kind of validation error is reported with its JSON path, several at once;
 // a hand-written version-0 document migrates; saving is atomic and rewrites relative paths;
-// strokes become the expected sweep curves; the bundled examples load cleanly and their
+// strokes become the expected sweep curves; the cut settings of the mesh improvement default
+// to CutOptions', round-trip, are refused out of CutLimits' ranges with the key named and reach
+// toCutOptions; the bundled examples load cleanly, say what becomes of their chips, and their
 // strokes cut the sample anatomy into pieces.
 
 #include "scenario/scenario_document.h"
@@ -50,7 +52,9 @@ const char* kBaseDocument = R"({
       {"t": 1, "position": [0, 10, 8], "orientation": [1, 0, 0, 0]}]}],
   "sweeps": [{"name": "plane", "curves": [[[-10, -10, 5], [10, -10, 5]], [[-10, 10, 5], [10, 10, 5]]]}],
   "cut_settings": {"method": "hybrid", "triangulation": "enhanced", "d": 0.2, "snap": true,
-                   "relax_steps": 10, "w_spring": 1, "w_particle": 0.2, "damping": 10, "rings": 2},
+                   "relax_steps": 10, "w_spring": 1, "w_particle": 0.2, "damping": 10, "rings": 2,
+                   "improve": false, "improve_quality": 1.5, "improve_short_edge": 0.8,
+                   "improve_coarsen": 0.25},
   "effects": [{"name": "deformation", "parameters": {"distance": true}},
               {"name": "gravity", "parameters": {"acceleration": [0, 0, -9810]}},
               {"name": "fixed", "parameters": {}},
@@ -190,6 +194,12 @@ private slots:
     void saveToReadOnlyFolderKeepsFile();
     void saveRebasesRelativePaths();
     void toCutOptionsMapsEveryField();
+    void improvementDefaultsAreCutOptions_data();
+    void improvementDefaultsAreCutOptions();
+    void improvementRoundTrip_data();
+    void improvementRoundTrip();
+    void improvementOutOfRangeNamesKeyRangeAndValue_data();
+    void improvementOutOfRangeNamesKeyRangeAndValue();
     void strokeCurves_data();
     void strokeCurves();
     void poseInterpolation();
@@ -197,6 +207,7 @@ private slots:
     void nonUnitQuaternionsAreNormalised();
     void bundledExamplesLoad_data();
     void bundledExamplesLoad();
+    void bundledExamplesSayWhatBecomesOfChips();
     void bundledStrokesCutTheSample_data();
     void bundledStrokesCutTheSample();
 };
@@ -223,6 +234,10 @@ void TestScenarioDocument::baseDocumentIsValid() {
     QCOMPARE(s.expectations.size(), std::size_t(5));
     QCOMPARE(s.expectations[3].value, 1.0);
     QCOMPARE(s.expectations[1].tissue, std::string("polyp"));
+    QCOMPARE(s.cut.improve, false);
+    QCOMPARE(s.cut.improveQuality, 1.5);
+    QCOMPARE(s.cut.improveShortEdge, 0.8);
+    QCOMPARE(s.cut.improveCoarsen, 0.25);
 }
 
 void TestScenarioDocument::roundTrip_data() {
@@ -936,6 +951,163 @@ void TestScenarioDocument::toCutOptionsMapsEveryField() {
     QCOMPARE(o.relaxDamping, 7.0);
     QCOMPARE(o.relaxRings, 3);
     QCOMPARE(o.density, 0.002);
+    // The improvement step: values other than the defaults, so that a field left out fails.
+    c.improve = !CutOptions{}.improve;
+    c.improveQuality = 2.5;
+    c.improveShortEdge = 1.25;
+    c.improveCoarsen = 0.75;
+    const CutOptions improved = toCutOptions(c, m);
+    QCOMPARE(improved.improve, !CutOptions{}.improve);
+    QCOMPARE(improved.improveQuality, 2.5);
+    QCOMPARE(improved.improveShortEdge, 1.25);
+    QCOMPARE(improved.improveCoarsen, 0.75);
+    QVERIFY(validateCutOptions(improved).ok());
+}
+
+void TestScenarioDocument::improvementDefaultsAreCutOptions_data() {
+    QTest::addColumn<QByteArray>("cutSettings"); // the cut_settings object, improvement keys absent
+    QTest::newRow("no cut_settings") << QByteArray("<remove>");
+    QTest::newRow("empty cut_settings") << QByteArray("{}");
+    QTest::newRow("hybrid") << QByteArray(R"({"method": "hybrid", "d": 0.3})");
+    QTest::newRow("subdivision") << QByteArray(R"({"method": "subdivision"})");
+}
+
+void TestScenarioDocument::improvementDefaultsAreCutOptions() {
+    QFETCH(QByteArray, cutSettings);
+    const CutOptions defaults;
+    // The struct's own defaults, then those of a document that leaves the keys out.
+    const CutSettings fresh;
+    QCOMPARE(fresh.improve, defaults.improve);
+    QCOMPARE(fresh.improveQuality, defaults.improveQuality);
+    QCOMPARE(fresh.improveShortEdge, defaults.improveShortEdge);
+    QCOMPARE(fresh.improveCoarsen, defaults.improveCoarsen);
+
+    Scenario s;
+    ScenarioDiagnostics d;
+    QVERIFY2(parseScenario(bytes(modified(baseObject(), "cut_settings", cutSettings)), "", "doc", s, d).ok(),
+             qPrintable(issuesText(d)));
+    QCOMPARE(d.warningCount(), 0);
+    QCOMPARE(s.cut.improve, defaults.improve);
+    QCOMPARE(s.cut.improveQuality, defaults.improveQuality);
+    QCOMPARE(s.cut.improveShortEdge, defaults.improveShortEdge);
+    QCOMPARE(s.cut.improveCoarsen, defaults.improveCoarsen);
+    const CutOptions o = toCutOptions(s.cut, s.tissues[0].material);
+    QCOMPARE(o.improve, defaults.improve);
+    QCOMPARE(o.improveQuality, defaults.improveQuality);
+    QCOMPARE(o.improveShortEdge, defaults.improveShortEdge);
+    QCOMPARE(o.improveCoarsen, defaults.improveCoarsen);
+    // Saving writes them (every field is written), with the default values.
+    const QJsonObject written = scenarioToJson(s).value("cut_settings").toObject();
+    QCOMPARE(written.value("improve").toBool(false), defaults.improve);
+    QCOMPARE(written.value("improve_quality").toDouble(-1), defaults.improveQuality);
+    QCOMPARE(written.value("improve_short_edge").toDouble(-1), defaults.improveShortEdge);
+    QCOMPARE(written.value("improve_coarsen").toDouble(-1), defaults.improveCoarsen);
+}
+
+void TestScenarioDocument::improvementRoundTrip_data() {
+    QTest::addColumn<bool>("improve");
+    QTest::addColumn<double>("quality");
+    QTest::addColumn<double>("shortEdge");
+    QTest::addColumn<double>("coarsen");
+    QTest::newRow("off, odd values") << false << 0.3 << 1.7 << 0.1;
+    QTest::newRow("on, every criterion off") << true << 0.0 << 0.0 << 0.0;
+    QTest::newRow("on, the upper limits")
+        << true << CutLimits::kMaxImproveQuality << CutLimits::kMaxImproveShortEdge
+        << CutLimits::kMaxImproveCoarsen;
+    QTest::newRow("17 digits") << true << 0.30000000000000004 << 1.0000000000000002 << 0.1 + 0.2;
+}
+
+void TestScenarioDocument::improvementRoundTrip() {
+    QFETCH(bool, improve);
+    QFETCH(double, quality);
+    QFETCH(double, shortEdge);
+    QFETCH(double, coarsen);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    Scenario a;
+    ScenarioDiagnostics d;
+    QVERIFY2(parseScenario(kBaseDocument, dir.path().toStdString(), "base", a, d).ok(),
+             qPrintable(issuesText(d)));
+    a.cut.improve = improve;
+    a.cut.improveQuality = quality;
+    a.cut.improveShortEdge = shortEdge;
+    a.cut.improveCoarsen = coarsen;
+    QVERIFY2(validateScenario(a, d).ok(), qPrintable(issuesText(d)));
+
+    const std::string file = dir.filePath("improve.json").toStdString();
+    QVERIFY(saveScenario(file, a).ok());
+    const QJsonObject written =
+        QJsonDocument::fromJson(readBytes(QString::fromStdString(file))).object().value("cut_settings").toObject();
+    QCOMPARE(written.value("improve").toBool(!improve), improve);
+    QCOMPARE(written.value("improve_quality").toDouble(-1), quality);
+    QCOMPARE(written.value("improve_short_edge").toDouble(-1), shortEdge);
+    QCOMPARE(written.value("improve_coarsen").toDouble(-1), coarsen);
+
+    Scenario b;
+    QVERIFY2(loadScenario(file, b, d).ok(), qPrintable(issuesText(d)));
+    QCOMPARE(d.warningCount(), 0);
+    QCOMPARE(b.cut.improve, improve);
+    QCOMPARE(b.cut.improveQuality, quality);
+    QCOMPARE(b.cut.improveShortEdge, shortEdge);
+    QCOMPARE(b.cut.improveCoarsen, coarsen);
+    QVERIFY(a == b);
+    // Each field takes part in the comparison.
+    for (int field = 0; field < 4; ++field) {
+        Scenario c = b;
+        switch (field) {
+        case 0: c.cut.improve = !c.cut.improve; break;
+        case 1: c.cut.improveQuality += 0.5; break;
+        case 2: c.cut.improveShortEdge += 0.5; break;
+        default: c.cut.improveCoarsen = c.cut.improveCoarsen > 0.5 ? 0.25 : 0.75; break;
+        }
+        QVERIFY2(!(c == b), qPrintable(QString::number(field)));
+    }
+}
+
+void TestScenarioDocument::improvementOutOfRangeNamesKeyRangeAndValue_data() {
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<QByteArray>("value"); // JSON
+    QTest::addColumn<QString>("expected"); // the message's text after the path
+    const auto range = [](double hi) {
+        return QStringLiteral("[0, %1]").arg(QString::number(hi, 'g', QLocale::FloatingPointShortest));
+    };
+    const auto outOfRange = [&](const char* value, double hi) {
+        return QStringLiteral("out of range: %1 (expected a number in %2)").arg(value, range(hi));
+    };
+    QTest::newRow("quality above the limit")
+        << "improve_quality" << QByteArray("4.5") << outOfRange("4.5", CutLimits::kMaxImproveQuality);
+    QTest::newRow("quality negative")
+        << "improve_quality" << QByteArray("-0.1") << outOfRange("-0.1", CutLimits::kMaxImproveQuality);
+    QTest::newRow("short edge above the limit")
+        << "improve_short_edge" << QByteArray("12") << outOfRange("12", CutLimits::kMaxImproveShortEdge);
+    QTest::newRow("short edge negative")
+        << "improve_short_edge" << QByteArray("-2") << outOfRange("-2", CutLimits::kMaxImproveShortEdge);
+    QTest::newRow("coarsen above the limit")
+        << "improve_coarsen" << QByteArray("1.5") << outOfRange("1.5", CutLimits::kMaxImproveCoarsen);
+    QTest::newRow("coarsen huge")
+        << "improve_coarsen" << QByteArray("1e300") << outOfRange("1e+300", CutLimits::kMaxImproveCoarsen);
+    QTest::newRow("quality a string")
+        << "improve_quality" << QByteArray("\"1\"") << QStringLiteral("expected a number, got a string");
+    QTest::newRow("improve a number")
+        << "improve" << QByteArray("1") << QStringLiteral("expected true or false, got a number");
+    QTest::newRow("improve null")
+        << "improve" << QByteArray("null") << QStringLiteral("expected true or false, got null");
+}
+
+void TestScenarioDocument::improvementOutOfRangeNamesKeyRangeAndValue() {
+    QFETCH(QString, key);
+    QFETCH(QByteArray, value);
+    QFETCH(QString, expected);
+    const QString path = "cut_settings." + key;
+    Scenario s;
+    s.metadata.title = "untouched";
+    ScenarioDiagnostics d;
+    const Status st = parseScenario(bytes(modified(baseObject(), path, value)), "", "doc.json", s, d);
+    QVERIFY(!st.ok());
+    QCOMPARE(d.errorCount(), 1);
+    QCOMPARE(s.metadata.title, std::string("untouched"));
+    // The one line a user sees: the file, the key's path, the value and the range.
+    QCOMPARE(QString::fromStdString(st.message()), "doc.json: " + path + ": " + expected);
 }
 
 void TestScenarioDocument::strokeCurves_data() {
@@ -1054,6 +1226,23 @@ void TestScenarioDocument::bundledExamplesLoad() {
         QVERIFY2(s.findEffect(e), e);
     QVERIFY(!s.tissues[0].fixedRegions.empty());
     QCOMPARE(s.tool.curve.size(), std::size_t(9)); // a half loop of 8 segments
+}
+
+/// Every bundled example says what becomes of the pieces its cuts take off (issue 16: the
+/// examples use remove or rigid chips), in the file itself rather than by the default.
+void TestScenarioDocument::bundledExamplesSayWhatBecomesOfChips() {
+    const QStringList files = QDir(resourcePath(QString())).entryList({"*.json"}, QDir::Files, QDir::Name);
+    QVERIFY2(files.size() >= 3, qPrintable(files.join(", ")));
+    for (const QString& file : files) {
+        const QJsonObject raw = QJsonDocument::fromJson(readBytes(resourcePath(file))).object();
+        const QString policy = raw.value("simulation").toObject().value("resected_pieces").toString();
+        QVERIFY2(policy == "rigid" || policy == "remove", qPrintable(file + ": '" + policy + "'"));
+        Scenario s;
+        ScenarioDiagnostics d;
+        QVERIFY2(loadScenario(resourcePath(file).toStdString(), s, d).ok(), qPrintable(issuesText(d)));
+        QVERIFY2(d.issues().empty(), qPrintable(issuesText(d)));
+        QCOMPARE(QString::fromStdString(s.simulation.resectedPieces), policy);
+    }
 }
 
 void TestScenarioDocument::bundledStrokesCutTheSample_data() {

@@ -159,6 +159,14 @@ private slots:
              &ScenarioDocument::cutSettingsChanged},
             {"rings", nothing, [](ScenarioDocument& d) { d.setRings(3); },
              &ScenarioDocument::cutSettingsChanged},
+            {"improve", nothing, [](ScenarioDocument& d) { d.setImprove(false); },
+             &ScenarioDocument::cutSettingsChanged},
+            {"improve quality", nothing, [](ScenarioDocument& d) { d.setImproveQuality(2); },
+             &ScenarioDocument::cutSettingsChanged},
+            {"improve short edge", nothing, [](ScenarioDocument& d) { d.setImproveShortEdge(1.5); },
+             &ScenarioDocument::cutSettingsChanged},
+            {"improve coarsen", nothing, [](ScenarioDocument& d) { d.setImproveCoarsen(0.1); },
+             &ScenarioDocument::cutSettingsChanged},
             {"all cut settings", nothing,
              [](ScenarioDocument& d) {
                  CutSettings s;
@@ -269,6 +277,27 @@ private slots:
         other->setD(0.2);
         other->setD(0.2);
         QCOMPARE(other->undoStack()->count(), 2);
+
+        // The improvement's factors merge each with itself, not with one another; its switch
+        // does not merge.
+        auto improvement = makeDocument();
+        QVERIFY(improvement->newFromSample("polyp"));
+        improvement->setImproveQuality(1.5);
+        improvement->setImproveQuality(2);
+        improvement->setImproveShortEdge(1);
+        improvement->setImproveShortEdge(1.25);
+        improvement->setImproveCoarsen(0.25);
+        improvement->setImproveCoarsen(0.3);
+        QCOMPARE(improvement->undoStack()->count(), 3);
+        improvement->setImprove(false);
+        improvement->setImprove(true);
+        QCOMPARE(improvement->undoStack()->count(), 5);
+        improvement->undoStack()->setIndex(3);
+        QCOMPARE(improvement->scenario().cut.improve, true);
+        QCOMPARE(improvement->scenario().cut.improveQuality, 2.0);
+        QCOMPARE(improvement->scenario().cut.improveCoarsen, 0.3);
+        improvement->undoStack()->setIndex(0);
+        QVERIFY(improvement->scenario().cut == CutSettings{});
     }
 
     void mergeStopsAtSave() {

@@ -4,6 +4,7 @@
 
 #include "main_window.h"
 
+#include "core/mesh/quality.h"
 #include "scenario/accuracy_study.h"
 #include "widgets/accuracy_chart.h"
 #include "widgets/accuracy_panel.h"
@@ -12,6 +13,7 @@
 #include "widgets/cut_panel.h"
 #include "widgets/cut_preview.h"
 #include "widgets/language.h"
+#include "widgets/quality_curve.h"
 #include "widgets/quality_panel.h"
 #include "widgets/quality_summary_table.h"
 #include "widgets/scenario_document.h"
@@ -33,6 +35,8 @@
 #include <QMenuBar>
 #include <QPushButton>
 #include <QSettings>
+#include <QStyle>
+#include <QStyleOptionButton>
 #include <vtkCamera.h>
 
 #include "scenario/scenario_load.h"
@@ -57,6 +61,13 @@ namespace {
 
 constexpr int kWaitMs = 180'000;
 
+
+/// Where a click toggles a check box: its indicator (the widget may be wider than its text).
+QPoint indicatorCentre(QCheckBox* box) {
+    QStyleOptionButton option;
+    option.initFrom(box);
+    return box->style()->subElementRect(QStyle::SE_CheckBoxIndicator, &option, box).center();
+}
 
 /// A window on the sample polyp, loaded, with errors signalled instead of shown.
 struct Studio {
@@ -902,6 +913,70 @@ private slots:
                                                                 QualitySummaryTable::After),
                  QString::number(targetTets));
         QCOMPARE(s.tets(), targetTets);
+    }
+
+    // Issue 16: the quality dock draws the remaining tissue's worst radius ratio, relative to
+    // the input's, after every cut of the open scenario; cuts applied through the cut panel
+    // add their points (the pending one's shown apart first), undo takes them away.
+    void qualityDockCurveFollowsTheAppliedCuts() {
+        Studio s;
+        QVERIFY(s.load());
+        QualityCurve* curve = s.window.qualityPanel()->cutCurve();
+        QVERIFY(curve);
+        QCOMPARE(curve->points(), std::vector<QPointF>{QPointF(0, 1)}); // the input alone
+        QVERIFY(!curve->pendingPoint());
+
+        // Without the improvement, and with a small d, the cuts leave worse tets than the
+        // input's worst (with it the curve of these cuts stays at 1).
+        auto* improve = s.window.cutPanel()->findChild<QCheckBox*>(QStringLiteral("improve"));
+        QTest::mouseClick(improve, Qt::LeftButton, {}, indicatorCentre(improve));
+        s.window.cutPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("d"))->setValue(0.05);
+        QVERIFY(s.idle());
+        QCOMPARE(s.window.document().scenario().cut.improve, false);
+        QCOMPARE(curve->points().size(), std::size_t(1));
+
+        const TetMesh& base = s.window.session().base()->mesh();
+        auto* apply = s.window.cutPanel()->findChild<QPushButton*>(QStringLiteral("applyCut"));
+        for (const SweepSpec& sweep : {planeSweep(base, 0.6, 1e-3), planeSweep(base, 0.4, 2e-3)}) {
+            s.window.cutPreview().setPendingSweep(sweep);
+            QVERIFY(s.idle());
+            const auto pending = curve->pendingPoint();
+            QVERIFY(pending);
+            QCOMPARE(pending->x(), double(curve->points().size()));
+            QVERIFY(apply->isEnabled());
+            QTest::mouseClick(apply, Qt::LeftButton);
+            QVERIFY(s.idle());
+            QVERIFY(!curve->pendingPoint());
+        }
+        QCOMPARE(int(s.window.document().scenario().sweeps.size()), 2);
+
+        // Independently of the studio: the scenario replayed with its first cut, then both.
+        Scenario first = s.window.document().scenario();
+        first.sweeps.resize(1);
+        Tissue once, twice;
+        QVERIFY(replays(first, &once).ok());
+        QVERIFY(replays(s.window.document().scenario(), &twice).ok());
+        const double input = once.inputWorstRatio();
+        QVERIFY(input > 0);
+        QCOMPARE(curve->inputRatio(), input);
+        const std::vector<QPointF> points = curve->points();
+        QCOMPARE(points.size(), std::size_t(3));
+        QCOMPARE(points[0], QPointF(0, 1));
+        QCOMPARE(points[1], QPointF(1, summarizeQuality(once.mesh()).minRadiusRatio / input));
+        QCOMPARE(points[2], QPointF(2, summarizeQuality(twice.mesh()).minRadiusRatio / input));
+        QCOMPARE(points[2].y() * input, s.window.session().current()->quality.minRadiusRatio);
+        QVERIFY2(points[1].y() < 1 && points[2].y() <= points[1].y(),
+                 qPrintable(QStringLiteral("%1 %2").arg(points[1].y()).arg(points[2].y())));
+        for (const QPointF& p : points)
+            QVERIFY(curve->plotRect().adjusted(-1, -1, 1, 1).contains(curve->pixelOf(p)));
+        QVERIFY(!curve->pointToolTip(2).isEmpty());
+
+        // Undo the second cut: its point goes.
+        s.action("undo")->trigger();
+        QVERIFY(s.idle());
+        QCOMPARE(curve->points().size(), std::size_t(2));
+        QCOMPARE(curve->points()[1], points[1]);
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
     }
 
     // Issue 15, the paper's loop motion: "Pull loop", one click near the top of the polyp's
