@@ -111,13 +111,7 @@ double volumeAndGradient(const TetMesh& m, const Tet& q, int v, const Vec3& p, V
 
 /// Barycentric coordinates of p in tet q (reference positions).
 std::array<double, 4> referenceBarycentric(const TetMesh& m, const Tet& q, const Vec3& p) {
-    const Vec3 &a = m.ref(q[0]), &b = m.ref(q[1]), &c = m.ref(q[2]), &d = m.ref(q[3]);
-    const Vec3 ab = b - a, ac = c - a, ad = d - a, ap = p - a;
-    const double vol = ab.dot(ac.cross(ad));
-    const double w1 = ap.dot(ac.cross(ad)) / vol;
-    const double w2 = ab.dot(ap.cross(ad)) / vol;
-    const double w3 = ab.dot(ac.cross(ap)) / vol;
-    return {1.0 - w1 - w2 - w3, w1, w2, w3};
+    return barycentric(m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3]), p);
 }
 
 struct Face {
@@ -673,7 +667,6 @@ private:
     bool tryFlip23(int t, int apexIndex) {
         const Tet q1 = m.tet(t);
         const int d = q1[apexIndex];
-        Tet face = q1;
         int t2 = -1, e = -1;
         // The other tet with the face's three nodes.
         const int a = q1[(apexIndex + 1) % 4], b = q1[(apexIndex + 2) % 4], c = q1[(apexIndex + 3) % 4];
@@ -689,7 +682,6 @@ private:
                 break;
             }
         }
-        (void)face;
         if (t2 < 0 || e < 0 || !editableTet(m.tet(t2)))
             return false;
         // The new edge d-e must not exist already.

@@ -14,15 +14,8 @@
 namespace resect {
 
 std::array<double, 4> barycentricInTet(const TetMesh& mesh, int tet, const Vec3& p) {
-    // Closed form: w_i = volume of the tet with corner i replaced by p / volume of the tet.
     const Tet& q = mesh.tet(tet);
-    const Vec3 &a = mesh.pos(q[0]), &b = mesh.pos(q[1]), &c = mesh.pos(q[2]), &d = mesh.pos(q[3]);
-    const Vec3 ab = b - a, ac = c - a, ad = d - a, ap = p - a;
-    const double v = ab.dot(ac.cross(ad));
-    const double w1 = ap.dot(ac.cross(ad)) / v;
-    const double w2 = ab.dot(ap.cross(ad)) / v;
-    const double w3 = ab.dot(ac.cross(ap)) / v;
-    return {1.0 - w1 - w2 - w3, w1, w2, w3};
+    return barycentric(mesh.pos(q[0]), mesh.pos(q[1]), mesh.pos(q[2]), mesh.pos(q[3]), p);
 }
 
 namespace {

@@ -202,6 +202,15 @@ double signedVolume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) 
     return (b - a).dot((c - a).cross(d - a)) / 6.0;
 }
 
+std::array<double, 4> barycentric(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& p) {
+    const Vec3 ab = b - a, ac = c - a, ad = d - a, ap = p - a;
+    const double v = ab.dot(ac.cross(ad));
+    const double w1 = ap.dot(ac.cross(ad)) / v;
+    const double w2 = ab.dot(ap.cross(ad)) / v;
+    const double w3 = ab.dot(ac.cross(ap)) / v;
+    return {1.0 - w1 - w2 - w3, w1, w2, w3};
+}
+
 double TetMesh::referenceVolume(int t) const {
     const Tet& q = m_tets[t];
     return signedVolume(m_ref[q[0]], m_ref[q[1]], m_ref[q[2]], m_ref[q[3]]);

@@ -140,6 +140,10 @@ private:
 /// Signed volume of the tet (a, b, c, d): det[b-a, c-a, d-a] / 6.
 double signedVolume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
+/// Barycentric coordinates of p in the tet (a, b, c, d) (closed form: w_i is the volume of the
+/// tet with corner i replaced by p over the tet's volume); they sum to 1.
+std::array<double, 4> barycentric(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& p);
+
 /// For untrusted input: returns an empty string if every tet has four distinct indices in
 /// [0, nodeCount), else a message naming the first bad tet.
 std::string checkTetIndices(int nodeCount, std::span<const Tet> tets);
