@@ -17,6 +17,7 @@
 #include "core/mesh/tet_mesh_backup.h"
 #include "core/mesh/topology.h"
 #include "core/mesh/validity.h"
+#include "improve_regressions.h"
 
 #include <QStringList>
 #include <QTest>
@@ -917,6 +918,46 @@ private slots:
         m.removeTet(2);
         outer.restore();
         QVERIFY2(differences(original, m).isEmpty(), qPrintable(differences(original, m)));
+    }
+
+    void worstTetsOfABareResection_data() {
+        QTest::addColumn<int>("which");
+        QTest::newRow("polyp after 10 scoops") << 0;
+        QTest::newRow("myoma after 12 scoops") << 1;
+    }
+    void worstTetsOfABareResection() {
+        // The worst tets the paper's pipeline alone left after a run of scoops (literal
+        // neighbourhoods, improve_regressions.h): the pass lifts them to at least half the
+        // input's worst ratio, with the volume kept and the fixed context untouched.
+        QFETCH(int, which);
+        const testing::ImproveCase c = which == 0 ? testing::polypAfter10() : testing::myomaAfter12();
+        TetMesh m = TetMesh::fromArrays(c.nodes, c.tets);
+        computeLumpedMasses(m, 1e-3);
+        const auto ratioOf = [&](const Tet& q) { return radiusRatio(m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3])); };
+        QVERIFY(ratioOf(c.worstTet) < 0.2 * c.inputWorstRatio);
+        const double volume = m.totalReferenceVolume();
+        const std::vector<Vec3> before(m.referencePositions().begin(), m.referencePositions().end());
+        ImproveOptions o;
+        o.badRatio = c.inputWorstRatio;
+        o.shortEdge = 0.6 * c.inputShortestEdge;
+        o.floorEdge = 0.45 * c.inputShortestEdge;
+        o.floorRatio = 0.55 * c.inputWorstRatio;
+        o.sweeps = 5;
+        const ImproveRegion region = improveRegion(m, std::vector<int>(c.worstTet.begin(), c.worstTet.end()), c.fixedNodes, 2);
+        const ImproveResult r = improveMesh(m, region, o);
+        QVERIFY(r.collapses + r.flips + r.smoothed > 0);
+        double worst = 1;
+        for (const Tet& q : m.tets())
+            worst = std::min(worst, ratioOf(q));
+        QVERIFY2(worst >= 0.5 * c.inputWorstRatio, qPrintable(QString("worst %1, input %2").arg(worst).arg(c.inputWorstRatio)));
+        QVERIFY(std::abs(m.totalReferenceVolume() - volume) <= 1e-12 * volume);
+        if (const auto problems = checkValidity(m); !problems.empty())
+            QFAIL(problems.front().message.c_str());
+        for (int n : c.fixedNodes) {
+            const int now = r.newNode.empty() ? n : r.newNode[n];
+            QVERIFY(now >= 0);
+            QCOMPARE(m.ref(now), before[n]);
+        }
     }
 };
 
