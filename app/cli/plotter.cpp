@@ -13,18 +13,19 @@ namespace resect::cli {
 
 namespace {
 
-constexpr int kPlotAttempts = 3;
+constexpr int kPlotAttempts = 4;
 constexpr int kRetryPauseMs = 1000;          // time for a clashing Xvfb to settle
 constexpr int kPlotterTimeoutMs = 600000;   // 10 minutes
 
-std::string runOnce(const QStringList& plotterArgs) {
+/// One run; `ownDisplay`: under a fresh `xvfb-run -a` even if DISPLAY is set.
+std::string runOnce(const QStringList& plotterArgs, bool ownDisplay) {
     const QString plotter = QCoreApplication::applicationDirPath() + "/resect-plot";
     if (!QFileInfo(plotter).isExecutable())
         return "the plotter " + plotter.toStdString() + " is not built";
     QStringList args = plotterArgs;
     QString program = plotter;
     const char* display = std::getenv("DISPLAY");
-    if (!display || !*display) {
+    if (ownDisplay || !display || !*display) {
         const QString xvfb = QStandardPaths::findExecutable("xvfb-run");
         if (xvfb.isEmpty())
             return "no X display (DISPLAY is unset) and no xvfb-run to start one (install xvfb)";
@@ -33,6 +34,11 @@ std::string runOnce(const QStringList& plotterArgs) {
     }
     QProcess p;
     p.setProcessChannelMode(QProcess::ForwardedChannels);
+    if (ownDisplay) {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove("DISPLAY");
+        p.setProcessEnvironment(env);
+    }
     p.start(program, args);
     if (!p.waitForStarted(30000))
         return "cannot start " + program.toStdString();
@@ -53,7 +59,9 @@ std::string runOnce(const QStringList& plotterArgs) {
 std::string runPlotter(const QStringList& plotterArgs, const char* who) {
     std::string why;
     for (int attempt = 0; attempt < kPlotAttempts; ++attempt) {
-        why = runOnce(plotterArgs);
+        // After a failure, a display of our own: the one we were given may be gone (an Xvfb
+        // that lost its display number to another started at the same moment).
+        why = runOnce(plotterArgs, attempt > 0);
         if (why.empty())
             return why;
         std::fprintf(stderr, "%s: drawing the plots failed (%s)%s\n", who, why.c_str(),
