@@ -889,7 +889,8 @@ private:
         neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
         const auto score = [&](const Vec3& p, Vec3* ascent) {
             int wi = 0;
-            const double ratio = o.badRatio > 0 ? worstAround(star, v, p, &wi) / o.badRatio : 2.0;
+            // (Both terms are capped at 2: above 1 neither limits the node.)
+            const double ratio = o.badRatio > 0 ? std::min(2.0, worstAround(star, v, p, &wi) / o.badRatio) : 2.0;
             double edge = 2.0;
             int nearest = -1;
             if (o.shortEdge > 0)
@@ -899,7 +900,7 @@ private:
                         nearest = u;
                     }
             if (ascent) {
-                if (ratio <= edge) {
+                if (ratio <= edge || nearest < 0) {
                     // Gradient of the worst tet's ratio (central differences).
                     const double h = 1e-4 * (m.ref(star[wi][0]) - m.ref(star[wi][1])).norm();
                     for (int k = 0; k < 3; ++k) {
