@@ -1,4 +1,5 @@
 #include "widgets/accuracy_chart.h"
+#include "widgets/chart_axes.h"
 
 #include <QHelpEvent>
 #include <QLocale>
@@ -24,15 +25,6 @@ constexpr double kLegendLine = 18; ///< px: one line of the legend
 constexpr double kSymbolWidth = 2 * kMarkerSize + 5; ///< px: a legend symbol and its gap
 
 const char* const kKnownMethods[] = {"subdivision", "hybrid-standard", "hybrid-enhanced"};
-
-/// The smallest of 1, 2, 5 times a power of ten that is at least `v` (> 0).
-double niceStep(double v) {
-    const double p = std::pow(10.0, std::floor(std::log10(v)));
-    for (double m : {1.0, 2.0, 5.0, 10.0})
-        if (m * p >= v * (1 - 1e-9))
-            return m * p;
-    return 10 * p;
-}
 
 void drawMarker(QPainter& painter, const std::string& method, QPointF c, double s) {
     if (method == "subdivision") {

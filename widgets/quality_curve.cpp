@@ -1,4 +1,5 @@
 #include "widgets/quality_curve.h"
+#include "widgets/chart_axes.h"
 
 #include <QHelpEvent>
 #include <QLocale>
@@ -18,15 +19,6 @@ constexpr double kPickRadius = 6.0; ///< px: how near the pointer must be to a p
 constexpr double kMarkerSize = 3.5; ///< px: a point's radius
 constexpr double kLeft = 56, kRight = 16, kTop = 14, kBottom = 40; ///< px: margins around the axes
 const QColor kCurveColour(40, 160, 90); // the hybrid-enhanced colour of the accuracy chart
-
-/// The smallest of 1, 2, 5 times a power of ten that is at least `v` (> 0).
-double niceStep(double v) {
-    const double p = std::pow(10.0, std::floor(std::log10(v)));
-    for (double m : {1.0, 2.0, 5.0, 10.0})
-        if (m * p >= v * (1 - 1e-9))
-            return m * p;
-    return 10 * p;
-}
 
 } // namespace
 
