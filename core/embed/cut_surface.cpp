@@ -1502,23 +1502,11 @@ public:
             if (polygons.empty())
                 continue;
             ++closed;
-            std::vector<Vec2> uv;
-            std::vector<int> vertexOf;
-            std::vector<std::vector<int>> local;
-            for (const auto& polygon : polygons) {
-                std::vector<int> loop;
-                for (int v : polygon) {
-                    loop.push_back(static_cast<int>(uv.size()));
-                    uv.push_back(m_s.cutUvs[v]);
-                    vertexOf.push_back(v);
-                }
-                local.push_back(std::move(loop));
-            }
             const int side = 1;  // the + boundary runs counter-clockwise around its cap (plusPolygons)
+            std::vector<int> vertexOf;
             std::vector<std::array<int, 3>> cap;
-            if (Status s = triangulateCap(uv, local, side, cap); !s.ok())
+            if (Status s = capInUv(polygons, side, true, vertexOf, cap); !s.ok())
                 return s;
-            avoidSurfaceEdges(cap, uv, vertexOf, true, 1);
             for (const auto& c : cap) {
                 // Counter-clockwise in (u, v); the + cap must run against the + boundary.
                 Tri plus{vertexOf[c[0]], vertexOf[c[1]], vertexOf[c[2]]};
@@ -1550,6 +1538,28 @@ public:
         return Status::success();
     }
 
+    /// Triangulates the region bounded by `polygons` (surface vertices) in the sweep's (u, v)
+    /// plane, then flips or splits cap edges the surface already has (`mirrored`: both sides'
+    /// caps follow). `cap` indexes `vertexOf`, the surface vertex of each point.
+    Status capInUv(const std::vector<std::vector<int>>& polygons, int side, bool mirrored, std::vector<int>& vertexOf,
+                   std::vector<std::array<int, 3>>& cap) {
+        std::vector<Vec2> uv;
+        std::vector<std::vector<int>> local;
+        for (const auto& polygon : polygons) {
+            std::vector<int> loop;
+            for (int v : polygon) {
+                loop.push_back(static_cast<int>(uv.size()));
+                uv.push_back(m_s.cutUvs[v]);
+                vertexOf.push_back(v);
+            }
+            local.push_back(std::move(loop));
+        }
+        if (Status s = triangulateCap(uv, local, side, cap); !s.ok())
+            return s;
+        avoidSurfaceEdges(cap, uv, vertexOf, mirrored, side);
+        return Status::success();
+    }
+
     /// Where the caps cannot mirror each other (the cut passes through a surface vertex twice,
     /// and one side has two copies of it where the other has one), each side's loops are closed
     /// by their own triangulation in (u, v). The two caps are then only as coincident as the
@@ -1564,22 +1574,10 @@ public:
                 if (polygons.empty())
                     continue;
                 ++closed;
-                std::vector<Vec2> uv;
                 std::vector<int> vertexOf;
-                std::vector<std::vector<int>> local;
-                for (const auto& polygon : polygons) {
-                    std::vector<int> loop;
-                    for (int v : polygon) {
-                        loop.push_back(static_cast<int>(uv.size()));
-                        uv.push_back(m_s.cutUvs[v]);
-                        vertexOf.push_back(v);
-                    }
-                    local.push_back(std::move(loop));
-                }
                 std::vector<std::array<int, 3>> cap;
-                if (Status s = triangulateCap(uv, local, sign, cap); !s.ok())
+                if (Status s = capInUv(polygons, sign, false, vertexOf, cap); !s.ok())
                     return s;
-                avoidSurfaceEdges(cap, uv, vertexOf, false, sign);
                 for (const auto& c : cap) {
                     // Counter-clockwise in (u, v): the + cap runs against its boundary, the -
                     // cap (whose region lies right of its boundary) with it.
