@@ -615,7 +615,7 @@ private:
         return -1;
     }
 
-    bool editableTet(const Tet& q) const {
+    bool flippableTet(const Tet& q) const {
         for (int v : q)
             if (!flippable.count(v) || !alive(v))
                 return false;
@@ -682,7 +682,7 @@ private:
                 break;
             }
         }
-        if (t2 < 0 || e < 0 || !editableTet(m.tet(t2)))
+        if (t2 < 0 || e < 0 || !flippableTet(m.tet(t2)))
             return false;
         // The new edge d-e must not exist already.
         for (int u : m.nodeTets(d)) {
@@ -715,7 +715,7 @@ private:
         // The ring of other nodes, in order: each ring tet holds two consecutive ones.
         std::vector<std::array<int, 2>> pairs;
         for (int u : ring) {
-            if (!editableTet(m.tet(u)))
+            if (!flippableTet(m.tet(u)))
                 return false;
             std::array<int, 2> pr{-1, -1};
             int k = 0;
@@ -836,7 +836,7 @@ private:
             if (!alive(n))
                 continue;
             for (int t : m.nodeTets(n))
-                if (seen.insert(t).second && tetRatio(t) < o.badRatio && editableTet(m.tet(t)))
+                if (seen.insert(t).second && tetRatio(t) < o.badRatio && flippableTet(m.tet(t)))
                     bad.push_back(m.tet(t));
         }
         for (const Tet& nodesOfBad : bad) {
