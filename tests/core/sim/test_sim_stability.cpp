@@ -177,13 +177,6 @@ bool finite(const TetMesh& mesh) {
     return true;
 }
 
-double totalMass(const TetMesh& mesh) {
-    double m = 0;
-    for (double x : mesh.masses())
-        m += x;
-    return m;
-}
-
 /// Random velocities of `speed` mm/s in every direction (reproducible).
 void excite(TetMesh& mesh, double speed, unsigned seed) {
     std::mt19937 rng(seed);
@@ -228,7 +221,7 @@ RunResult simulate(TetMesh mesh, const HardCase& c, Integrator integrator, doubl
     // add over the run. An unstable run grows exponentially past it.
     const double duration = steps * r.dt;
     const double g = 9810;
-    const double bound = 10 * kinetic0 + totalMass(mesh) * g * g * duration * duration;
+    const double bound = 10 * kinetic0 + sumOfMasses(mesh) * g * g * duration * duration;
     for (int i = 0; i < steps; ++i) {
         if (Status s = sim.step(r.dt); !s.ok()) {
             r.failure = QString("step %1: %2").arg(i).arg(QString::fromStdString(s.message()));

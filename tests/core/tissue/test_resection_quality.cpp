@@ -69,10 +69,6 @@ struct Surfaces {
     }
 };
 
-double massOf(const TetMesh& mesh) {
-    return sumOfMasses(mesh);
-}
-
 /// The body's tet mesh at a scale (cached): a sample meshed at its defaults, or a box.
 const TetMesh& body(const QString& name, double scale) {
     static std::map<std::pair<QString, double>, TetMesh> cache;
@@ -173,7 +169,7 @@ private:
 
         const double ratio0 = summarizeQuality(input).minRadiusRatio;
         const double edge0 = shortestEdge(input);
-        const double volume0 = input.totalReferenceVolume(), mass0 = massOf(input);
+        const double volume0 = input.totalReferenceVolume(), mass0 = sumOfMasses(input);
         const int tets0 = input.tetCount();
         QCOMPARE(tissue.inputWorstRatio(), ratio0);
         QCOMPARE(tissue.inputShortestEdge(), edge0);
@@ -217,7 +213,7 @@ private:
             QVERIFY2(m.tetCount() < 2 * tets0, qPrintable(at + QString(": input had %1").arg(tets0)));
             // Volume and mass: the tissue's and the chips' add up to the input's.
             const double volume = m.totalReferenceVolume() + tissue.resectedVolume();
-            const double mass = massOf(m) + tissue.resectedMass();
+            const double mass = sumOfMasses(m) + tissue.resectedMass();
             QVERIFY2(std::abs(volume - volume0) <= 1e-9 * volume0,
                      qPrintable(at + QString(": volume %1 -> %2").arg(volume0, 0, 'g', 17).arg(volume, 0, 'g', 17)));
             QVERIFY2(std::abs(mass - mass0) <= 1e-9 * mass0,

@@ -3,6 +3,7 @@
 // scales: everything follows a cut; a cut cancelled before any stage leaves the tissue (and a
 // running simulation) bit-identical to one that never saw it; copies cut identically; a tissue
 // that moved is cut where it is now.
+#include "core/mesh/masses.h"
 #include "core/mesher/samples.h"
 #include "core/mesher/tetrahedralize.h"
 #include "core/sim/fixed_nodes_effect.h"
@@ -83,13 +84,6 @@ SimulationSetup sceneSetup(double scale = 1) {
     return setup;
 }
 
-double totalMass(const TetMesh& m) {
-    double sum = 0;
-    for (double x : m.masses())
-        sum += x;
-    return sum;
-}
-
 } // namespace
 
 class TestTissue : public QObject {
@@ -111,7 +105,7 @@ private slots:
             QVERIFY(tissue.step(dt).ok());
         tissue.updateSurface();
         const int tetsBefore = tissue.mesh().tetCount();
-        const double massBefore = totalMass(tissue.mesh());
+        const double massBefore = sumOfMasses(tissue.mesh());
         const double volumeBefore = tissue.mesh().totalReferenceVolume();
         const double surfaceVolumeBefore = enclosedVolume(tissue.surface().surface());
         QCOMPARE(tissue.pieces().count, 1);
@@ -127,7 +121,7 @@ private slots:
         QCOMPARE(mesh.tetCount(), tetsBefore + cut.tets.addedTets - cut.removedTets);
         QVERIFY(cut.tets.addedTets > 0);
         QVERIFY(std::abs(mesh.totalReferenceVolume() - volumeBefore) <= 1e-12 * volumeBefore);
-        QVERIFY(std::abs(totalMass(mesh) - massBefore) <= 1e-12 * massBefore);
+        QVERIFY(std::abs(sumOfMasses(mesh) - massBefore) <= 1e-12 * massBefore);
         // Schemes: every tet the cut made carries the scheme of its parent's cut.
         QCOMPARE(static_cast<int>(tissue.schemes().size()), mesh.tetCount());
         for (int t = cut.changes.firstNewTet; t < mesh.tetCount(); ++t)
@@ -334,7 +328,7 @@ private slots:
         const double dt = tissue.simulator()->timeStep();
         for (int i = 0; i < 5; ++i)
             QVERIFY(tissue.step(dt).ok());
-        const double mass = totalMass(tissue.mesh()), volume = tissue.mesh().totalReferenceVolume();
+        const double mass = sumOfMasses(tissue.mesh()), volume = tissue.mesh().totalReferenceVolume();
         const int tets = tissue.mesh().tetCount();
         TissueCut cut;
         QVERIFY(tissue.cut(planeAt(15, 1), CutOptions{}, &cut).ok());
@@ -344,7 +338,7 @@ private slots:
         const Chip& chip = tissue.chips().front();
         QCOMPARE(chip.cut, 1);
         QCOMPARE(tissue.mesh().tetCount() + chip.mesh.tetCount(), tets + cut.tets.addedTets - cut.removedTets);
-        QVERIFY(std::abs(totalMass(tissue.mesh()) + tissue.resectedMass() - mass) <= 1e-12 * mass);
+        QVERIFY(std::abs(sumOfMasses(tissue.mesh()) + tissue.resectedMass() - mass) <= 1e-12 * mass);
         QVERIFY(std::abs(tissue.mesh().totalReferenceVolume() + tissue.resectedVolume() - volume) <= 1e-12 * volume);
         QCOMPARE(tissue.resectedMass(), chip.mass);
         // The surface went with its piece: both closed.
