@@ -1,5 +1,6 @@
 // resect simulate MESH --steps N --out OUT.vtu [--report R.json] [--dt S]
-//     [--integrator explicit|implicit|symplectic-euler|velocity-verlet|backward-euler]
+//     [--integrator explicit|implicit|symplectic-euler|velocity-verlet|projective-dynamics|backward-euler]
+//     [--iterations N]
 //     [--effects deformation,gravity,...] [--fix-box x0 y0 z0 x1 y1 z1]
 //     [--damping C] [--tool x,y,z,x,y,z,... --tool-radius R] [--threads N]
 //     [--resected rigid|remove|deformable]
@@ -37,6 +38,7 @@
 #include <QJsonArray>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -49,10 +51,12 @@ Integrator parseIntegrator(const std::string& text) {
         return Integrator::SymplecticEuler;
     if (text == "velocity-verlet" || text == "verlet")
         return Integrator::VelocityVerlet;
-    if (text == "implicit" || text == "backward-euler")
+    if (text == "implicit" || text == "projective-dynamics")
+        return Integrator::ProjectiveDynamics;
+    if (text == "backward-euler")
         return Integrator::BackwardEuler;
-    badInput("--integrator: expected explicit, implicit, symplectic-euler, velocity-verlet or "
-             "backward-euler, got '" +
+    badInput("--integrator: expected explicit, implicit, symplectic-euler, velocity-verlet, "
+             "projective-dynamics or backward-euler, got '" +
              text + "'");
 }
 
@@ -105,6 +109,7 @@ int runSimulate(Args args) {
     const auto toolText = args.option("--tool");
     const auto toolRadius = args.number("--tool-radius", 0.0, 1e12);
     const int threads = args.integer("--threads", 1, 256).value_or(0);
+    const auto iterations = args.integer("--iterations", 1, 1000);
     const std::string out = args.requiredOption("--out");
     const auto reportPath = args.option("--report");
     const auto files = args.positionals();
@@ -204,6 +209,8 @@ int runSimulate(Args args) {
     options.integrator = integrator;
     options.threads = threads;
     options.dt = dt.value_or(0.0);
+    if (iterations)
+        options.projective.iterations = *iterations;
     Simulator sim(mesh, Material{}, options);
     for (const std::string& name : effects)
         if (Status s = sim.addEffect(name, settings, registry); !s.ok())
@@ -217,6 +224,7 @@ int runSimulate(Args args) {
     const double initialKinetic = sim.kineticEnergy();
     double maxKinetic = initialKinetic, maxSpeed = 0, finalKinetic = initialKinetic;
     Status failure;
+    const auto wallStart = std::chrono::steady_clock::now();
     for (int s = 0; s < steps; ++s) {
         failure = sim.step(h);
         if (!failure.ok())
@@ -227,6 +235,7 @@ int runSimulate(Args args) {
         maxSpeed = std::max(maxSpeed, sim.lastStep().maxSpeed);
         finalKinetic = sim.lastStep().kineticEnergy;
     }
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
     bool finite = failure.ok();
     for (const Vec3& p : mesh.positions())
         finite = finite && p.allFinite();
@@ -239,6 +248,13 @@ int runSimulate(Args args) {
     report["integrator"] = integratorName(integrator);
     report["threads"] = sim.threads();
     report["time_s"] = sim.time();
+    report["wall_s"] = wall;
+    report["realtime_factor"] = number(wall > 0 ? sim.time() / wall : 0.0);
+    if (const ProjectiveDynamicsStats* pd = sim.projectiveStats()) {
+        report["iterations"] = sim.options().projective.iterations;
+        report["factorizations"] = pd->factorizations;
+        report["factor_ms"] = pd->factorMs;
+    }
     QJsonArray effectTimes;
     for (const EffectTime& e : sim.totalTimes()) {
         QJsonObject o;
@@ -288,9 +304,9 @@ int runSimulate(Args args) {
     if (Status s = writeVtu(out, scene); !s.ok())
         throw CliError{kInternal, s.message()};
     std::printf(
-        "%s: %d steps of %.4g s (%s, stable %.4g s), max speed %.4g mm/s, %d inverted -> %s\n",
-        files[0].c_str(), sim.stepsTaken(), h, integratorName(integrator), stableDt, maxSpeed,
-        countInverted(mesh), out.c_str());
+        "%s: %d steps of %.4g s (%s, stable %.4g s) in %.3g s wall (%.3gx real time), max speed %.4g mm/s, %d inverted -> %s\n",
+        files[0].c_str(), sim.stepsTaken(), h, integratorName(integrator), stableDt, wall,
+        wall > 0 ? sim.time() / wall : 0.0, maxSpeed, countInverted(mesh), out.c_str());
     return kOk;
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/mesh/masses.h"
 #include "core/mesh/stable_time_step.h"
+#include "core/sim/deformation_effect.h"
 #include "core/sim/parallel.h"
 
 #include <algorithm>
@@ -43,12 +44,14 @@ const char* integratorName(Integrator integrator) {
         return "velocity-verlet";
     case Integrator::BackwardEuler:
         return "backward-euler";
+    case Integrator::ProjectiveDynamics:
+        return "projective-dynamics";
     }
     return "?";
 }
 
 bool isExplicit(Integrator integrator) {
-    return integrator != Integrator::BackwardEuler;
+    return integrator != Integrator::BackwardEuler && integrator != Integrator::ProjectiveDynamics;
 }
 
 Simulator::Simulator(TetMesh& mesh, const Material& material, const SimulatorOptions& options)
@@ -240,6 +243,44 @@ Status Simulator::implicitStep(const SimState& s, double h, NodePass& pass, doub
     return Status::success();
 }
 
+Status Simulator::projectiveStep(const SimState& s, double h, NodePass& pass, double& potential) {
+    const auto n = static_cast<std::size_t>(m_mesh.nodeCount());
+    if (!m_projective)
+        m_projective = std::make_unique<ProjectiveDynamics>();
+    // External forces: every effect but the deformation, at the start of the step.
+    Effect* deformation = nullptr;
+    std::fill(m_force.begin(), m_force.end(), Vec3::Zero());
+    potential = 0;
+    for (std::size_t i = 0; i < m_effects.size(); ++i) {
+        if (m_effects[i]->name() == "deformation") {
+            deformation = m_effects[i].get();
+            continue;
+        }
+        const auto t0 = Clock::now();
+        m_effectPotential[i] = m_effects[i]->addForces(s, m_force);
+        potential += m_effectPotential[i];
+        m_effectMs[i] += msSince(t0);
+    }
+    constrainAll(m_force, true);
+    m_forceZero = false;
+    // Held nodes: those an effect's constraint zeroes.
+    m_tmp.assign(n, Vec3::Ones());
+    constrainAll(m_tmp, true);
+    m_held.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+        m_held[i] = m_tmp[i] != Vec3::Ones();
+    static const DeformationModel kNoTerms;
+    const auto* model = deformation ? &static_cast<DeformationEffect*>(deformation)->model() : &kNoTerms;
+    if (Status st = m_projective->step(m_mesh, *model, m_held, m_force, h, m_options.projective,
+                                       m_threads, m_backupX, m_backupV);
+        !st.ok())
+        return st;
+    m_last.solverIterations = m_options.projective.iterations;
+    potential += m_projective->energy();
+    pass = measureVelocities(s.v, s.mass, nodeThreads());
+    return Status::success();
+}
+
 Status Simulator::step() {
     return step(timeStep());
 }
@@ -294,6 +335,11 @@ Status Simulator::step(double h) {
     }
     case Integrator::BackwardEuler:
         if (Status st = implicitStep(s, h, pass, potential); !st.ok())
+            return st;
+        m_forcesValid = false;
+        break;
+    case Integrator::ProjectiveDynamics:
+        if (Status st = projectiveStep(s, h, pass, potential); !st.ok())
             return st;
         m_forcesValid = false;
         break;
@@ -362,6 +408,8 @@ void Simulator::applyCut(const CutChanges& changes) {
     m_forcesValid = false;
     m_needReference = true;
     m_fallbackStableDt = 0;
+    if (m_projective)
+        m_projective->invalidate();
 }
 
 } // namespace resect

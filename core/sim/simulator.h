@@ -37,6 +37,7 @@
 #include "core/sim/effect.h"
 #include "core/sim/effect_registry.h"
 #include "core/sim/explicit_integrators.h"
+#include "core/sim/projective_dynamics.h"
 #include "core/status.h"
 
 #include <memory>
@@ -49,9 +50,12 @@ namespace resect {
 /// replay with tool contact, the studio and the benchmarks step at this fraction of it.
 inline constexpr double kLargeDeformationMargin = 0.8;
 
-enum class Integrator { SymplecticEuler, VelocityVerlet, BackwardEuler };
+/// ProjectiveDynamics is the product's implicit integrator (projective_dynamics.h; "implicit"
+/// on the command line and in scenarios); BackwardEuler, the linearised backward Euler with
+/// conjugate gradients, is kept for comparison.
+enum class Integrator { SymplecticEuler, VelocityVerlet, BackwardEuler, ProjectiveDynamics };
 
-/// "symplectic-euler", "velocity-verlet", "backward-euler".
+/// "symplectic-euler", "velocity-verlet", "backward-euler", "projective-dynamics".
 const char* integratorName(Integrator integrator);
 bool isExplicit(Integrator integrator);
 
@@ -63,6 +67,7 @@ struct SimulatorOptions {
     double explosionFactor = 100;
     bool keepLastGoodState = true; ///< back up the state in every step (see above)
     BackwardEulerOptions implicit;
+    ProjectiveDynamicsOptions projective;
 };
 
 struct EffectTime {
@@ -76,7 +81,7 @@ struct StepReport {
     double kineticEnergy = 0;        ///< after the step
     double potentialEnergy = 0;      ///< at the last force evaluation
     double maxSpeed = 0;             ///< mm/s, after the step
-    int solverIterations = 0;        ///< conjugate-gradient iterations (implicit only)
+    int solverIterations = 0;        ///< conjugate-gradient (backward Euler) or local-global (projective dynamics) iterations
 };
 
 class Simulator {
@@ -134,6 +139,10 @@ public:
         m_steps = steps;
     }
     int threads() const { return m_threads; }
+    /// The projective-dynamics solver's figures (factorisations, their cost), or nullptr.
+    const ProjectiveDynamicsStats* projectiveStats() const {
+        return m_projective ? &m_projective->stats() : nullptr;
+    }
     /// Threads of the node passes for the current node count.
     int nodeThreads() const;
     const SimulatorOptions& options() const { return m_options; }
@@ -145,6 +154,7 @@ private:
     double evaluateForces(const SimState& s, std::span<Vec3> f, bool zeroed = false);
     void constrainAll(std::span<Vec3> v, bool timed);
     Status implicitStep(const SimState& s, double h, NodePass& pass, double& potential);
+    Status projectiveStep(const SimState& s, double h, NodePass& pass, double& potential);
     void ensureBuffers();
 
     TetMesh& m_mesh;
@@ -168,6 +178,8 @@ private:
     bool m_needReference = true;
     double m_referenceEnergy = 0, m_energyScale = 0;
     double m_fallbackStableDt = 0;
+    std::unique_ptr<ProjectiveDynamics> m_projective;
+    std::vector<char> m_held; ///< per node: held by an effect (projective dynamics)
 };
 
 } // namespace resect

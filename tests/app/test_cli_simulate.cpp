@@ -150,10 +150,37 @@ private slots:
                               path("implicit.json")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         const QJsonObject rep = readJsonFile(path("implicit.json"));
-        QCOMPARE(rep["integrator"].toString(), QString("backward-euler"));
+        // "implicit" is projective dynamics: factored once, at 10 local-global iterations.
+        QCOMPARE(rep["integrator"].toString(), QString("projective-dynamics"));
         QCOMPARE(rep["finite"].toBool(), true);
         QCOMPARE(rep["inverted"].toInt(), 0);
+        QCOMPARE(rep["factorizations"].toInt(), 1);
+        QCOMPARE(rep["iterations"].toInt(), 10);
+        QVERIFY(rep["realtime_factor"].toDouble() > 0);
+        QVERIFY(rep["wall_s"].toDouble() > 0);
         QCOMPARE(effectNames(rep), (QStringList{"deformation", "gravity", "damping", "fixed"}));
+    }
+
+    void backwardEulerStaysForComparison() {
+        const Run probe = runCli({"simulate", path("bar.vtu"), "--steps", "1", "--out", path("probe.vtu"), "--report",
+                                  path("probe.json")});
+        QCOMPARE(probe.code, 0);
+        const double stable = readJsonFile(path("probe.json"))["stable_dt"].toDouble();
+        const Run r = runCli({"simulate", path("bar.vtu"), "--steps", "20", "--dt", QString::number(10 * stable, 'g', 17),
+                              "--integrator", "backward-euler", "--effects", "deformation,gravity", "--fix-box", "-1", "-1",
+                              "-1", "0.01", "3", "3", "--out", path("be.vtu"), "--report", path("be.json")});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const QJsonObject rep = readJsonFile(path("be.json"));
+        QCOMPARE(rep["integrator"].toString(), QString("backward-euler"));
+        QCOMPARE(rep["inverted"].toInt(), 0);
+        QVERIFY(!rep.contains("factorizations"));
+    }
+
+    void iterationsAreChecked() {
+        const Run r = runCli({"simulate", path("bar.vtu"), "--steps", "2", "--integrator", "implicit", "--iterations", "0",
+                              "--out", path("it.vtu")});
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains("--iterations"), qPrintable(r.err));
     }
 
     void toolContact() {

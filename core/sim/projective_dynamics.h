@@ -1,0 +1,91 @@
+#pragma once
+// Projective dynamics (Bouaziz, Martin, Liu, Kavan and Pauly, SIGGRAPH 2014) for the paper's
+// tissue model: the implicit integrator the product uses (Integrator::ProjectiveDynamics,
+// "implicit" on the command line and in scenarios).
+//
+// Every term of the model (forces.h) is a quadratic penalty 1/2 k (C(x) - C0)^2 on a scalar
+// constraint. Projective dynamics writes a term as the distance of its nodes from the set
+// where the constraint holds,
+//   E_i = w_i / 2 | A_i x - p_i |^2,   p_i = the projection of A_i x onto { C = C0 },
+// where A_i takes the term's nodes relative to their centroid (an edge: the edge vector).
+//   edge (a, b):   p = l0 d / |d| for d = x_b - x_a: E_i = k/2 (|d| - l0)^2 exactly, w = k.
+//   tet, triangle: p = the nodes moved along the gradient of the volume (area) until it is the
+//                  rest value (one Newton step); E_i = k/2 (C - C0)^2 / |grad C|^2 to second
+//                  order, so w = k |grad C0|^2 gives the model's stiffness at rest.
+// Backward Euler, x' = argmin 1/(2h^2) |x - y|_M^2 + sum E_i with y = x + h v + h^2 M^-1 f_ext,
+// is then solved by alternating the local projections (independent per term) with a global
+// solve of
+//   (M / h^2 + sum w_i A_i^T A_i) x = M / h^2 y + sum w_i A_i^T p_i,
+// whose matrix is the same for x, y and z and constant while the mesh, the masses and h do
+// not change: it is factored once (sparse Cholesky, LDL^T with a fill-reducing ordering) and
+// every iteration costs two triangular solves. v' = (x' - x) / h.
+//
+// External forces (gravity, damping, the other effects) enter y, evaluated at the start of
+// the step. Constrained nodes (an effect's constrain() zeroes them: anchors) and nodes without
+// mass are eliminated from the system: they keep their position, and their terms' coupling
+// moves to the right-hand side. Each iteration lowers the step's objective, so the step is
+// stable for any h and any number of iterations; few iterations leave the material softer and
+// add damping (measured in the README's simulation section).
+//
+// After a cut (or a change of h) the matrix is re-assembled and re-factored: O(mesh) and
+// measured by `resect bench realtime` (refactor ms).
+
+#include "core/mesh/tet_mesh.h"
+#include "core/status.h"
+
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace resect {
+
+class DeformationModel;
+
+struct ProjectiveDynamicsOptions {
+    int iterations = 10; ///< local-global iterations per step
+};
+
+struct ProjectiveDynamicsStats {
+    double factorMs = 0;   ///< the last assembly and factorisation
+    int factorizations = 0;
+    int unknowns = 0;      ///< free nodes in the system
+    double nonZeros = 0;   ///< of the factor L
+};
+
+class ProjectiveDynamics {
+public:
+    ProjectiveDynamics();
+    ~ProjectiveDynamics();
+    ProjectiveDynamics(const ProjectiveDynamics&) = delete;
+    ProjectiveDynamics& operator=(const ProjectiveDynamics&) = delete;
+
+    /// Marks the system stale (after a cut: the terms, masses or nodes changed).
+    void invalidate() { m_valid = false; }
+
+    /// One step of h. `fixed`: per node, non-zero if the node is held (it does not move).
+    /// fext: the external forces at the start of the step (#nodes). The mesh's positions and
+    /// velocities are updated.
+    /// backupX, backupV: #nodes or empty; receive the state before the step.
+    /// Fails (state untouched) only if the system cannot be factored.
+    Status step(TetMesh& mesh, const DeformationModel& model, std::span<const char> fixed,
+                std::span<const Vec3> fext, double h, const ProjectiveDynamicsOptions& options,
+                int threads, std::span<Vec3> backupX, std::span<Vec3> backupV);
+
+    const ProjectiveDynamicsStats& stats() const { return m_stats; }
+    /// The model's energy at the last iteration's positions (the projections' distances,
+    /// sum w_i / 2 |A_i x - p_i|^2: the model's energy to second order).
+    double energy() const { return m_energy; }
+
+private:
+    struct Impl;
+    Status prepare(const TetMesh& mesh, const DeformationModel& model, std::span<const char> fixed,
+                   double h);
+
+    std::unique_ptr<Impl> m_impl;
+    bool m_valid = false;
+    double m_h = 0;
+    double m_energy = 0;
+    ProjectiveDynamicsStats m_stats;
+};
+
+} // namespace resect
