@@ -42,7 +42,10 @@ namespace resect {
 class DeformationModel;
 
 struct ProjectiveDynamicsOptions {
-    int iterations = 10; ///< local-global iterations per step
+    /// Local-global iterations per step. Fewer are faster and lag: on the sample polyp under
+    /// gravity at 1 ms (README, "Simulation"), 5 follow the explicit reference within about
+    /// 50 ms, 1 lags it by about 0.3 s; all settle to the same sag within 2 %.
+    int iterations = 5;
 };
 
 struct ProjectiveDynamicsStats {
