@@ -264,12 +264,13 @@ QJsonObject scenarioToJson(const Scenario& s) {
     root["effects"] = effects;
 
     const SimulationSettings& sim = s.simulation;
-    root["simulation"] = withExtra(
-        {{"integrator", qs(sim.integrator)},
-         {"time_step", sim.stableTimeStep() ? QJsonValue("stable") : QJsonValue(sim.timeStep)},
-         {"duration", sim.duration},
-         {"resected_pieces", qs(sim.resectedPieces)}},
-        sim.extra);
+    QJsonObject simulation{{"integrator", qs(sim.integrator)},
+                           {"time_step", sim.stableTimeStep() ? QJsonValue("stable") : QJsonValue(sim.timeStep)},
+                           {"duration", sim.duration},
+                           {"resected_pieces", qs(sim.resectedPieces)}};
+    if (sim.iterations != SimulationSettings{}.iterations)
+        simulation["iterations"] = sim.iterations;
+    root["simulation"] = withExtra(simulation, sim.extra);
 
     QJsonArray expectations;
     for (const Expectation& e : s.expectations)

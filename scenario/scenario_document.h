@@ -31,7 +31,7 @@
 //                     "damping": 10, "rings": 2, "improve": true, "improve_quality": 1,
 //                     "improve_short_edge": 0.6, "improve_coarsen": 0.5},
 //    "effects": [{"name": "gravity", "parameters": {"acceleration": [0, 0, -9810]}}, ...],
-//    "simulation": {"integrator": "symplectic-euler", "time_step": "stable", "duration": 0.5},
+//    "simulation": {"integrator": "implicit", "time_step": 0.001, "duration": 0.5},
 //    "expectations": [{"kind": "pieces_at_least", "value": 2}, ...]}
 //
 // Paths ("surface", "mesh", a sweep's "file") are relative to the scenario file's folder
@@ -85,8 +85,13 @@
 //                                           radius; the tool is tool.curve at the current pose)
 //                             damping       {"coefficient": 1/s in (0, 1e6]} (default: the
 //                                           tissue's material damping, which must then be > 0)
-//  simulation               integrator symplectic-euler|velocity-verlet|backward-euler;
-//                           time_step: s in (0, 1] or "stable" (the stable explicit step);
+//  simulation               integrator implicit (default; = projective-dynamics, the
+//                           product's implicit integrator) | symplectic-euler |
+//                           velocity-verlet | backward-euler (linearised, for comparison);
+//                           iterations: local-global iterations per implicit step, 1..1000
+//                           (default 5; fewer are faster and lag, see README "Real time");
+//                           time_step: s in (0, 1] or "stable" (explicit: the stable step,
+//                           kept safe as the tissue deforms; implicit: 0.001 s);
 //                           duration: s in [0, 1e5] (0: no simulation after the cuts);
 //                           resected_pieces rigid (default) | remove | deformable: what
 //                           becomes of a piece a cut separates from every fixed region
@@ -247,7 +252,8 @@ const std::vector<std::string>& knownEffectNames();
 
 struct SimulationSettings {
     std::string integrator =
-        "symplectic-euler"; ///< symplectic-euler|velocity-verlet|backward-euler
+        "implicit"; ///< implicit|projective-dynamics|symplectic-euler|velocity-verlet|backward-euler
+    int iterations = 5;     ///< local-global iterations per implicit (projective-dynamics) step
     double timeStep = 0;    ///< s; 0 means "stable"
     double duration = 0;    ///< s
     std::string resectedPieces = "rigid";  ///< rigid|remove|deformable: pieces off the fixed regions

@@ -744,8 +744,9 @@ void readSimulation(Context& c, const QJsonValue& v, SimulationSettings& out) {
     if (v.isUndefined() || !asObject(c, v, "simulation", o))
         return;
     Fields f(c, o, "simulation");
-    f.choice("integrator", {"symplectic-euler", "velocity-verlet", "backward-euler"},
+    f.choice("integrator", {"implicit", "projective-dynamics", "symplectic-euler", "velocity-verlet", "backward-euler"},
              out.integrator);
+    f.integer("iterations", out.iterations, 1, 1000);
     const QJsonValue dt = f.take("time_step");
     if (dt.isString()) {
         if (dt.toString() != QLatin1String("stable"))

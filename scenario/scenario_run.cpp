@@ -14,6 +14,8 @@ namespace resect {
 namespace {
 
 Integrator integratorOf(const std::string& name) {
+    if (name == "implicit" || name == "projective-dynamics")
+        return Integrator::ProjectiveDynamics;
     if (name == "velocity-verlet")
         return Integrator::VelocityVerlet;
     if (name == "backward-euler")
@@ -125,6 +127,10 @@ Status planLoadedTissue(const Scenario& scenario, const TissueSpec& tissue, TetM
     }
     plan.simulation.integrator = integratorOf(scenario.simulation.integrator);
     plan.simulation.dt = scenario.simulation.timeStep;  // 0: stable
+    plan.simulation.projective.iterations = scenario.simulation.iterations;
+    // An implicit integrator has no stability limit: "stable" is the trainer's haptic rate.
+    if (plan.simulation.dt <= 0 && !isExplicit(plan.simulation.integrator))
+        plan.simulation.dt = kImplicitDefaultStep;
     // One thread: a scenario replays to the same result on any machine.
     plan.simulation.threads = 1;
     plan.effectSettings.threads = 1;

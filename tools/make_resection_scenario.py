@@ -57,10 +57,10 @@ def main():
         "strokes": [stroke(k, 1.0 * k) for k in range(10)],  # a stroke a second
         "cut_settings": base["cut_settings"],
         # The tissue settles under gravity after the passes (no loop contact: the strokes only
-        # cut), with the implicit integrator at 5 ms; the chips each pass takes off leave the
+        # cut), with the implicit integrator at 1 ms; the chips each pass takes off leave the
         # scene (issue 16).
         "effects": [e for e in base["effects"] if e["name"] != "tool-contact"],
-        "simulation": {"integrator": "backward-euler", "time_step": 0.005, "duration": 0.05,
+        "simulation": {"integrator": "implicit", "time_step": 0.001, "duration": 0.05,
                        "resected_pieces": "remove"},
         "expectations": [
             {"kind": "pieces_at_least", "value": 4},

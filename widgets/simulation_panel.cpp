@@ -79,6 +79,10 @@ SimulationPanel::SimulationPanel(ScenarioDocument& document, SimulationControlle
     m_cost->setObjectName(QStringLiteral("simCost"));
     m_cost->setWordWrap(true);
     form->addRow(tr("Per step"), m_cost);
+    m_realTime = new QLabel;
+    m_realTime->setObjectName(QStringLiteral("simRealtime"));
+    m_realTime->setWordWrap(true);
+    form->addRow(tr("Real time"), m_realTime);
     layout->addWidget(figures);
     m_status = new QLabel;
     m_status->setObjectName(QStringLiteral("simStatus"));
@@ -141,6 +145,14 @@ void SimulationPanel::updateFigures() {
     if (m_controller.msPerSimulatedSecond() > 0)
         parts << tr("%1 ms per simulated second").arg(number(m_controller.msPerSimulatedSecond()));
     m_cost->setText(parts.join(QLatin1Char('\n')));
+    const SimulationSettings& settings = m_document.scenario().simulation;
+    QString integrator = QString::fromStdString(settings.integrator);
+    if (settings.integrator == "implicit" || settings.integrator == "projective-dynamics")
+        integrator = settings.iterations == 1 ? tr("implicit, 1 iteration a step")
+                                              : tr("implicit, %1 iterations a step").arg(settings.iterations);
+    const double ms = m_controller.msPerSimulatedSecond();
+    m_realTime->setText(ms > 0 ? tr("%1x real time (%2)").arg(number(1000 / ms, 3), integrator)
+                               : tr("not measured yet (%1)").arg(integrator));
 }
 
 } // namespace resect

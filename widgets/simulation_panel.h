@@ -2,7 +2,8 @@
 // SimulationPanel: play, pause, single step and reset of the simulation
 // (SimulationController), the effects the scenario declares as check boxes (toggling one is
 // an undoable document edit), and what the simulation costs: time step, stable time step,
-// milliseconds per step of each effect and compute time per simulated second.
+// milliseconds per step of each effect and compute time per simulated second, and the
+// real-time factor (simulated seconds per second of compute) with the integrator.
 
 #include <QWidget>
 
@@ -41,6 +42,7 @@ private:
     QLabel* m_time = nullptr;
     QLabel* m_dt = nullptr;
     QLabel* m_cost = nullptr;
+    QLabel* m_realTime = nullptr;
     QLabel* m_status = nullptr;
     bool m_syncing = false;
 };

@@ -41,6 +41,10 @@ namespace resect {
 
 class DeformationModel;
 
+/// The step of an implicit integrator where a scene asks for "stable" (it has no stability
+/// limit): 1 ms, a haptic trainer's rate.
+inline constexpr double kImplicitDefaultStep = 0.001;
+
 struct ProjectiveDynamicsOptions {
     /// Local-global iterations per step. Fewer are faster and lag: on the sample polyp under
     /// gravity at 1 ms (README, "Simulation"), 5 follow the explicit reference within about

@@ -455,6 +455,8 @@ void TestScenarioDocument::validationErrors_data() {
     row("fixed without regions", "tissues[0].fixed_regions", "[]", "effects[2]", "fixed_regions");
     row("integrator unknown", "simulation.integrator", "\"rk4\"", "simulation.integrator",
         "symplectic-euler, velocity-verlet, backward-euler");
+    row("iterations zero", "simulation.iterations", "0", "simulation.iterations", "out of range");
+    row("iterations fractional", "simulation.iterations", "2.5", "simulation.iterations", "expected an integer");
     row("time step word", "simulation.time_step", "\"fast\"", "simulation.time_step", "\"stable\"");
     row("time step zero", "simulation.time_step", "0", "simulation.time_step", "out of range");
     row("too many steps", "simulation.time_step", "1e-12", "simulation", "steps");

@@ -465,6 +465,13 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(s.window.simulation().steps() > 10, 30'000);
         play->click();
         QVERIFY(!s.window.simulation().isPlaying());
+        // A new scene simulates with the implicit integrator at 1 ms, and the dock says how
+        // fast that runs against real time.
+        QCOMPARE(s.window.simulation().timeStep(), 0.001);
+        auto* realTime = panel->findChild<QLabel*>(QStringLiteral("simRealtime"));
+        QVERIFY(realTime);
+        QVERIFY2(realTime->text().contains(QStringLiteral("x real time")), qPrintable(realTime->text()));
+        QVERIFY2(realTime->text().contains(QStringLiteral("implicit, 5 iterations")), qPrintable(realTime->text()));
 
         // Undoing the effect edit rebuilds the simulation without gravity, at time 0.
         s.action("undo")->trigger();
