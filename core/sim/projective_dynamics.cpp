@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace resect {
@@ -20,6 +21,8 @@ using Clock = std::chrono::steady_clock;
 /// fork-join costs more than it saves.
 constexpr std::int64_t kLocalGrain = 32768, kNodeGrain = 8192;
 constexpr int kMaxThreads = 256;
+/// Halvings of an iterate that raised the objective, at most.
+constexpr int kMaxHalvings = 10;
 
 /// The tet's volume and its gradient (for the weights).
 inline double tetVolumeGradient(const Vec3* p, Vec3* g) {
@@ -67,9 +70,9 @@ struct ProjectiveDynamics::Impl {
     std::vector<Edge> edges;
     std::vector<double> edgeRest, edgeW;
     std::vector<Tet> tets;
-    std::vector<double> tetRest6, tetW; ///< 6 V0, w
+    std::vector<double> tetRest6, tetW, tetInvGG0; ///< 6 V0, w, 1 / sum |G|^2 at rest
     std::vector<Tri> tris;
-    std::vector<double> triRest, triW;
+    std::vector<double> triRest, triW, triInvGG0;
 
     /// Projections, w A^T p, per term and node, stored by node (node i sums the contiguous
     /// slots [slotBegin[i], slotBegin[i + 1])): the local step scatters its writes, the
@@ -84,12 +87,12 @@ struct ProjectiveDynamics::Impl {
     std::vector<int> lBegin, lRow, perm;
     std::vector<double> lValue, inverseD;
 
-    std::vector<Vec3> rhs, work; ///< rows
+    std::vector<Vec3> rhs, work, previous; ///< rows
     std::vector<Vec3> y, x0;
 
-    /// The volume term i's projection (see the header; one Newton step, in plain arithmetic:
-    /// with G_k = 6 grad_k V and D = 6 V, p_k = y_k - (D - 6 V0) / sum |G|^2 G_k). Writes
-    /// w p_k to the nodes' slots; returns the term's energy w / 2 |y - p|^2.
+    /// The volume term i's projection (see the header), in plain arithmetic: with
+    /// G_k = 6 grad_k V and D = 6 V, p_k = y_k - (D - 6 V0) / sum |G0|^2 G_k. Writes w p_k to
+    /// the nodes' slots; returns twice the term's energy, w (D - 6 V0)^2 / sum |G0|^2.
     double projectTet(std::int64_t i, std::span<const Vec3> x) {
         const Tet& q = tets[i];
         const Vec3 &x0 = x[q[0]], &x1 = x[q[1]], &x2 = x[q[2]], &x3 = x[q[3]];
@@ -101,10 +104,8 @@ struct ProjectiveDynamics::Impl {
         const double g3x = e1y * e2z - e1z * e2y, g3y = e1z * e2x - e1x * e2z, g3z = e1x * e2y - e1y * e2x;
         const double g0x = -(g1x + g2x + g3x), g0y = -(g1y + g2y + g3y), g0z = -(g1z + g2z + g3z);
         const double det = g3x * e3x + g3y * e3y + g3z * e3z;
-        const double gg = g0x * g0x + g0y * g0y + g0z * g0z + g1x * g1x + g1y * g1y + g1z * g1z +
-                          g2x * g2x + g2y * g2y + g2z * g2z + g3x * g3x + g3y * g3y + g3z * g3z;
         const double residual = det - tetRest6[i];
-        const double mu = gg > 0 ? residual / gg : 0.0;
+        const double mu = residual * tetInvGG0[i];
         const double w = tetW[i];
         const double cx = 0.25 * (x0.x() + x1.x() + x2.x() + x3.x());
         const double cy = 0.25 * (x0.y() + x1.y() + x2.y() + x3.y());
@@ -118,7 +119,7 @@ struct ProjectiveDynamics::Impl {
     }
 
     /// The area term i's projection, likewise (with G_k = 2 grad_k A and the doubled area |n|:
-    /// p_k = y_k - (|n| - 2 A0) / sum |G|^2 G_k). A degenerate triangle projects to itself.
+    /// p_k = y_k - (|n| - 2 A0) / sum |G0|^2 G_k). A degenerate triangle projects to itself.
     double projectTriangle(std::int64_t i, std::span<const Vec3> x) {
         const Tri& q = tris[i];
         const Vec3 &x0 = x[q[0]], &x1 = x[q[1]], &x2 = x[q[2]];
@@ -131,10 +132,8 @@ struct ProjectiveDynamics::Impl {
         const double g1x = by * uz - bz * uy, g1y = bz * ux - bx * uz, g1z = bx * uy - by * ux;
         const double g2x = uy * az - uz * ay, g2y = uz * ax - ux * az, g2z = ux * ay - uy * ax;
         const double g0x = -(g1x + g2x), g0y = -(g1y + g2y), g0z = -(g1z + g2z);
-        const double gg = g0x * g0x + g0y * g0y + g0z * g0z + g1x * g1x + g1y * g1y + g1z * g1z +
-                          g2x * g2x + g2y * g2y + g2z * g2z;
         const double residual = len - 2 * triRest[i];
-        const double mu = gg > 0 && len > 0 ? residual / gg : 0.0;
+        const double mu = len > 0 ? residual * triInvGG0[i] : 0.0;
         const double w = triW[i];
         const double cx = (x0.x() + x1.x() + x2.x()) / 3, cy = (x0.y() + x1.y() + x2.y()) / 3,
                      cz = (x0.z() + x1.z() + x2.z()) / 3;
@@ -191,8 +190,8 @@ Status ProjectiveDynamics::prepare(const TetMesh& mesh, const DeformationModel& 
 
     // Live terms and their weights (see the header).
     d.edges.clear(), d.edgeRest.clear(), d.edgeW.clear();
-    d.tets.clear(), d.tetRest6.clear(), d.tetW.clear();
-    d.tris.clear(), d.triRest.clear(), d.triW.clear();
+    d.tets.clear(), d.tetRest6.clear(), d.tetW.clear(), d.tetInvGG0.clear();
+    d.tris.clear(), d.triRest.clear(), d.triW.clear(), d.triInvGG0.clear();
     {
         const auto e = model.edges();
         const auto rest = model.edgeRestLength();
@@ -221,6 +220,7 @@ Status ProjectiveDynamics::prepare(const TetMesh& mesh, const DeformationModel& 
             d.tets.push_back(q);
             d.tetRest6.push_back(rest6[t]);
             d.tetW.push_back(36 * k36[t] * gg);
+            d.tetInvGG0.push_back(1 / (36 * gg)); // G = 6 grad V
         }
     }
     if (model.terms().area) {
@@ -242,6 +242,7 @@ Status ProjectiveDynamics::prepare(const TetMesh& mesh, const DeformationModel& 
             d.tris.push_back(tr[i]);
             d.triRest.push_back(rest[i]);
             d.triW.push_back(k[i] * gg);
+            d.triInvGG0.push_back(1 / (4 * gg)); // G = 2 grad A
         }
     }
 
@@ -340,6 +341,7 @@ Status ProjectiveDynamics::prepare(const TetMesh& mesh, const DeformationModel& 
     d.rhs.resize(rows);
     m_h = h;
     m_valid = true;
+    m_lastEnergy = -1; // unknown until a step ends
     m_stats.factorMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     ++m_stats.factorizations;
     m_stats.unknowns = rows;
@@ -368,7 +370,6 @@ Status ProjectiveDynamics::step(TetMesh& mesh, const DeformationModel& model,
     for (int r = 0; r < rows; ++r) {
         const int i = d.freeNodes[r];
         d.y[i] = x[i] + h * v[i] + (h * h / mass[i]) * fext[i];
-        x[i] = d.y[i];
     }
 
     const auto edgeCount = static_cast<std::int64_t>(d.edges.size());
@@ -377,8 +378,9 @@ Status ProjectiveDynamics::step(TetMesh& mesh, const DeformationModel& model,
     const int localThreads = std::min(kMaxThreads, threadsFor(threads, edgeCount + tetCount + triCount, kLocalGrain));
     const int nodeThreads = threadsFor(threads, rows, kNodeGrain);
     double partial[kMaxThreads] = {};
-    for (int it = 0; it < options.iterations; ++it) {
-        // Local: every term's projection, w A^T p into its slots; the energy of the terms.
+    // Local: every term's projection at x, w A^T p into its slots; returns the backward-Euler
+    // objective 1/(2 h^2) |x - y|_M^2 + E(x) (E the model's energy, exact: see the header).
+    const auto local = [&]() {
         parallelRun(localThreads, [&](int t) {
             double energy = 0;
             for (auto i = chunkBegin(edgeCount, localThreads, t); i < chunkBegin(edgeCount, localThreads, t + 1); ++i) {
@@ -390,17 +392,64 @@ Status ProjectiveDynamics::step(TetMesh& mesh, const DeformationModel& model,
                 d.contribution[d.slot[2 * i]] = -d.edgeW[i] * p;
                 d.contribution[d.slot[2 * i + 1]] = d.edgeW[i] * p;
             }
-            for (auto i = chunkBegin(tetCount, localThreads, t); i < chunkBegin(tetCount, localThreads, t + 1); ++i) {
+            for (auto i = chunkBegin(tetCount, localThreads, t); i < chunkBegin(tetCount, localThreads, t + 1); ++i)
                 energy += d.projectTet(i, x);
-            }
-            for (auto i = chunkBegin(triCount, localThreads, t); i < chunkBegin(triCount, localThreads, t + 1); ++i) {
+            for (auto i = chunkBegin(triCount, localThreads, t); i < chunkBegin(triCount, localThreads, t + 1); ++i)
                 energy += d.projectTriangle(i, x);
-            }
             partial[t] = energy / 2;
         });
         m_energy = 0;
         for (int t = 0; t < localThreads; ++t)
             m_energy += partial[t];
+        double inertial = 0;
+        for (int r = 0; r < rows; ++r) {
+            const int i = d.freeNodes[r];
+            inertial += d.inertia[r] * (x[i] - d.y[i]).squaredNorm();
+        }
+        return inertial / 2 + m_energy;
+    };
+    // Safeguard: an iterate that raises the objective (far from rest, where the fixed matrix
+    // underestimates the model's stiffness) is pulled back halfway towards the previous one,
+    // so the objective never grows and the step cannot blow up.
+    d.previous.resize(rows);
+    double objective = std::numeric_limits<double>::infinity();
+    // The start x + h v; where it is worse than staying at x (objective 1/2 |v + h a|_M^2 +
+    // E(x), E from the end of the last step), x: then no step can end with more potential
+    // energy than the total before it (plus the external forces' work).
+    if (m_lastEnergy < 0) { // (the first step after a preparation)
+        local();
+        m_lastEnergy = m_energy;
+    }
+    for (int r = 0; r < rows; ++r)
+        x[d.freeNodes[r]] += h * v[d.freeNodes[r]];
+    double g = local();
+    {
+        double stay = m_lastEnergy;
+        for (int r = 0; r < rows; ++r) {
+            const int i = d.freeNodes[r];
+            stay += mass[i] / 2 * (v[i] + (h / mass[i]) * fext[i]).squaredNorm();
+        }
+        if (g > stay) {
+            for (int r = 0; r < rows; ++r)
+                x[d.freeNodes[r]] = d.x0[d.freeNodes[r]];
+            g = local();
+            ++m_stats.restarts;
+        }
+    }
+    for (int it = 0; it <= options.iterations; ++it) {
+        if (it > 0)
+            g = local();
+        for (int halving = 0; halving < kMaxHalvings && g > objective; ++halving) {
+            for (int r = 0; r < rows; ++r)
+                x[d.freeNodes[r]] = (x[d.freeNodes[r]] + d.previous[r]) / 2;
+            g = local();
+            ++m_stats.halvings;
+        }
+        if (it == options.iterations)
+            break; // the last iterate checked
+        objective = std::min(objective, g);
+        for (int r = 0; r < rows; ++r)
+            d.previous[r] = x[d.freeNodes[r]];
         // Global: right-hand side per free node (gathered, no races), then the solve.
         parallelRun(nodeThreads, [&](int t) {
             for (auto r = chunkBegin(rows, nodeThreads, t); r < chunkBegin(rows, nodeThreads, t + 1); ++r) {
@@ -422,6 +471,7 @@ Status ProjectiveDynamics::step(TetMesh& mesh, const DeformationModel& model,
         const int i = d.freeNodes[r];
         v[i] = (x[i] - d.x0[i]) * invH;
     }
+    m_lastEnergy = m_energy;
     return Status::success();
 }
 

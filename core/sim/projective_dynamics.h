@@ -9,9 +9,13 @@
 //   E_i = w_i / 2 | A_i x - p_i |^2,   p_i = the projection of A_i x onto { C = C0 },
 // where A_i takes the term's nodes relative to their centroid (an edge: the edge vector).
 //   edge (a, b):   p = l0 d / |d| for d = x_b - x_a: E_i = k/2 (|d| - l0)^2 exactly, w = k.
-//   tet, triangle: p = the nodes moved along the gradient of the volume (area) until it is the
-//                  rest value (one Newton step); E_i = k/2 (C - C0)^2 / |grad C|^2 to second
-//                  order, so w = k |grad C0|^2 gives the model's stiffness at rest.
+//   tet, triangle: p = the nodes moved along grad C by (C - C0) / |grad C0|^2 (one Newton
+//                  step towards the set, with the rest gradient's length), w = k |grad C0|^2:
+//                  w (A_i x - p_i) = k (C - C0) grad C is then exactly the model's force,
+//                  so a converged step is the model's backward Euler step and a settled
+//                  state the model's equilibrium (the local step is the model's gradient and
+//                  the constant matrix a fixed approximation of its Hessian: the
+//                  quasi-Newton view of Liu, Bouaziz and Kavan 2017).
 // Backward Euler, x' = argmin 1/(2h^2) |x - y|_M^2 + sum E_i with y = x + h v + h^2 M^-1 f_ext,
 // is then solved by alternating the local projections (independent per term) with a global
 // solve of
@@ -23,9 +27,12 @@
 // External forces (gravity, damping, the other effects) enter y, evaluated at the start of
 // the step. Constrained nodes (an effect's constrain() zeroes them: anchors) and nodes without
 // mass are eliminated from the system: they keep their position, and their terms' coupling
-// moves to the right-hand side. Each iteration lowers the step's objective, so the step is
-// stable for any h and any number of iterations; few iterations leave the material softer and
-// add damping (measured in the README's simulation section).
+// moves to the right-hand side. Each step starts from x + h v (not from y: the settled state is
+// then exactly the model's equilibrium whatever the number of iterations), or from x where
+// that is better for the objective below (violent motion at large steps), and no iterate may
+// raise the backward-Euler objective 1/(2h^2) |x - y|_M^2 + E(x) (one that does is pulled back
+// halfway, up to ten times), so the step stays bounded at any h. Few iterations lag the
+// converged motion and add damping (measured in the README, "Real time").
 //
 // After a cut (or a change of h) the matrix is re-assembled and re-factored: O(mesh) and
 // measured by `resect bench realtime` (refactor ms).
@@ -57,6 +64,8 @@ struct ProjectiveDynamicsStats {
     int factorizations = 0;
     int unknowns = 0;      ///< free nodes in the system
     double nonZeros = 0;   ///< of the factor L
+    long long halvings = 0; ///< iterates pulled back because they raised the objective
+    long long restarts = 0; ///< steps started from x instead of x + h v
 };
 
 class ProjectiveDynamics {
@@ -79,8 +88,7 @@ public:
                 int threads, std::span<Vec3> backupX, std::span<Vec3> backupV);
 
     const ProjectiveDynamicsStats& stats() const { return m_stats; }
-    /// The model's energy at the last iteration's positions (the projections' distances,
-    /// sum w_i / 2 |A_i x - p_i|^2: the model's energy to second order).
+    /// The model's energy (forces.h) at the positions of the last iteration's local step.
     double energy() const { return m_energy; }
 
 private:
@@ -92,6 +100,7 @@ private:
     bool m_valid = false;
     double m_h = 0;
     double m_energy = 0;
+    double m_lastEnergy = -1; ///< E at the end of the last step (< 0: unknown)
     ProjectiveDynamicsStats m_stats;
 };
 
