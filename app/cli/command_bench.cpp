@@ -141,10 +141,13 @@ int runSurface(Args& args) {
 }
 
 int runBenchResection(Args& args);  // resect bench resection (command_bench_resection.cpp)
+int runBenchRealtime(Args& args);   // resect bench realtime (command_bench_realtime.cpp)
 
 int runBench(Args args) {
     if (args.flag("resection"))
         return runBenchResection(args);
+    if (args.flag("realtime"))
+        return runBenchRealtime(args);
     if (args.flag("sim"))
         return runBenchSim(args);
     if (args.flag("surface"))

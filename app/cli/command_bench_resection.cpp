@@ -20,7 +20,7 @@
 // all passes) and DIR/resection.png (drawn by resect-plot --resection, as `resect bench` draws
 // its plots). Exit codes: 0 all written; 2 bad input (nothing written); 1 a plot could not be
 // drawn (the CSV and the markdown are written all the same).
-#include "app/cli/cli_common.h"
+#include "app/cli/bench_common.h"
 #include "app/cli/plotter.h"
 
 #include "core/mesh/quality.h"
@@ -30,7 +30,6 @@
 #include "core/sweep/stroke_shapes.h"
 #include "core/tissue/tissue.h"
 #include "scenario/anatomy.h"
-#include "scenario/atomic_file.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -61,16 +60,6 @@ const Vec3 kPolypAxis(1.2, 0.5, 0);
 /// The passes the markdown table reports (those up to --passes, and the last one).
 constexpr int kReportedPasses[] = {1, 10, 20};
 
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-std::string format(const char* f, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, v);
-    return buf;
-}
-
 /// Commas and line breaks would break a CSV cell or a markdown row.
 std::string cellText(std::string s) {
     for (char& c : s)
@@ -80,13 +69,6 @@ std::string cellText(std::string s) {
 }
 
 // ---------------------------------------------------------------- inputs
-
-struct Body {
-    std::string name; ///< the sample's name or the surface file's base name
-    TetMesh mesh;     ///< with masses (Eq. 3)
-    Vec3 axis;        ///< (x, y) the scoops pass through
-    double meshSeconds = 0;
-};
 
 struct Method {
     const char* name;
@@ -149,17 +131,19 @@ Request parseRequest(Args& args) {
     return r;
 }
 
-/// Loads every surface, then meshes each: all before anything is written. Bad input (one line on
-/// stderr, so the meshing notes are printed only once every body is meshed) if one fails.
-std::vector<Body> loadBodies(const Request& request) {
+} // namespace
+
+/// The notes are printed only once every body is meshed, so that bad input stays one line.
+std::vector<Body> loadBodies(const std::vector<std::string>& samples,
+                             const std::vector<std::string>& surfaces, const char* who) {
     struct Source {
         std::string source, name, option; // option: where a bad source came from
         TriangleSurface surface;
     };
     std::vector<Source> sources;
-    for (const std::string& sample : request.samples) // names checked in parseRequest
+    for (const std::string& sample : samples) // names checked by the caller
         sources.push_back({"sample:" + sample, sample, "--sample", {}});
-    for (const std::string& path : request.surfaces) {
+    for (const std::string& path : surfaces) {
         const QFileInfo info(QString::fromStdString(path));
         if (!info.isFile() || !info.isReadable())
             badInput("--surface: " + path + ": cannot read (not a readable file)");
@@ -184,13 +168,36 @@ std::vector<Body> loadBodies(const Request& request) {
         const auto [lo, hi] = boundingBox(body.mesh.positions());
         body.axis = source.source == "sample:polyp" ? kPolypAxis : Vec3(0.5 * (lo + hi));
         body.meshSeconds = secondsSince(t0);
-        notes += "[resection] meshed " + body.name + ": " + std::to_string(body.mesh.tetCount()) +
+        notes += std::string(who) + " meshed " + body.name + ": " + std::to_string(body.mesh.tetCount()) +
                  " tets in " + format("%.1f s", body.meshSeconds) + "\n" + log;
         bodies.push_back(std::move(body));
     }
     std::fputs(notes.c_str(), stderr);
     return bodies;
 }
+
+Tissue anchoredTissue(const Body& body) {
+    const auto [lo, hi] = boundingBox(body.mesh.positions());
+    FixedSelection anchors;
+    const Vec3 margin = Vec3::Constant(0.01 * (hi - lo).norm());
+    anchors.box = std::array<Vec3, 2>{
+        lo - margin, Vec3(hi.x(), hi.y(), lo.z() + kAnchorFraction * (hi.z() - lo.z())) + margin};
+    Tissue tissue;
+    if (Status s = Tissue::create(body.mesh, {}, Material{}, anchors, tissue); !s.ok())
+        badInput(body.name + ": " + s.message());
+    tissue.setResectedPieces(ResectedPieces::Remove);
+    return tissue;
+}
+
+Status cutScoop(Tissue& tissue, const Body& body, int k, const CutOptions& options, TissueCut* out) {
+    const auto [lo, hi] = boundingBox(body.mesh.positions());
+    SweepSurface sweep;
+    Status s = SweepSurface::fromCurves(
+        loopScoop(resectionScoop(Eigen::AlignedBox3d(lo, hi), body.axis, k)), sweep);
+    return s.ok() ? tissue.cut(sweep, options, out) : s;
+}
+
+namespace {
 
 // ---------------------------------------------------------------- passes
 
@@ -226,26 +233,10 @@ struct PassRow {
     double dtRel() const { return after.stableDt / input.stableDt; }
 };
 
-/// The tissue of a body as the resection starts: anchored at its base, resected pieces removed.
-Tissue anchoredTissue(const Body& body) {
-    const auto [lo, hi] = boundingBox(body.mesh.positions());
-    FixedSelection anchors;
-    const Vec3 margin = Vec3::Constant(0.01 * (hi - lo).norm());
-    anchors.box = std::array<Vec3, 2>{
-        lo - margin, Vec3(hi.x(), hi.y(), lo.z() + kAnchorFraction * (hi.z() - lo.z())) + margin};
-    Tissue tissue;
-    if (Status s = Tissue::create(body.mesh, {}, Material{}, anchors, tissue); !s.ok())
-        badInput(body.name + ": " + s.message());
-    tissue.setResectedPieces(ResectedPieces::Remove);
-    return tissue;
-}
-
 /// One series: `passes` scoops with one method on a copy of `start`; stops at a failed cut.
 std::vector<PassRow> runSeries(const Body& body, const Tissue& start, const Measures& input,
                                const Method& method, int passes) {
     Tissue tissue(start);
-    const auto [lo, hi] = boundingBox(body.mesh.positions());
-    const Eigen::AlignedBox3d bounds(lo, hi);
     std::vector<PassRow> rows;
     for (int k = 0; k < passes; ++k) {
         PassRow row;
@@ -253,12 +244,9 @@ std::vector<PassRow> runSeries(const Body& body, const Tissue& start, const Meas
         row.method = method.name;
         row.pass = k + 1;
         row.input = input;
-        SweepSurface sweep;
-        Status s = SweepSurface::fromCurves(loopScoop(resectionScoop(bounds, body.axis, k)), sweep);
         TissueCut cut;
         const auto t0 = std::chrono::steady_clock::now();
-        if (s.ok())
-            s = tissue.cut(sweep, method.options, &cut);
+        const Status s = cutScoop(tissue, body, k, method.options, &cut);
         row.ms = s.ok() ? cut.totalMs : 1e3 * secondsSince(t0);
         row.failure = s.ok() ? "" : cellText(s.message());
         row.after = measure(tissue.mesh(), tissue.material()); // as it was, if the cut failed
@@ -357,17 +345,12 @@ std::string passesMarkdown(const std::vector<PassRow>& rows, int passes) {
 // ---------------------------------------------------------------- plots
 
 
-void writeText(const std::string& path, const std::string& text) {
-    if (const Status s = writeFileAtomically(path, text); !s.ok())
-        throw CliError{kInternal, s.message()};
-}
-
 } // namespace
 
 int runBenchResection(Args& args) {
     const Request request = parseRequest(args);
     const auto t0 = std::chrono::steady_clock::now();
-    const std::vector<Body> bodies = loadBodies(request);
+    const std::vector<Body> bodies = loadBodies(request.samples, request.surfaces, "[resection]");
     std::vector<Tissue> starts; // all before the folder is made: nothing written on bad input
     for (const Body& body : bodies)
         starts.push_back(anchoredTissue(body));

@@ -62,6 +62,12 @@ commands:
                                     subdivision, hybrid and hybrid + improvement; per pass
                                     tets, worst radius ratio, shortest edge, stable dt, ms:
                                     DIR/resection.csv, resection.md, resection.png
+  bench realtime --out DIR [--quick] [--sizes 1000,10000,100000] [--scoops 12] [--no-plots]
+                                    real-time factor (simulated s per wall s) of projective
+                                    dynamics (5 and 1 iterations), backward Euler and explicit
+                                    Euler at 1 ms and 1/60 s on the samples, the samples after
+                                    loop scoops and boxes of --sizes tets; refactorisation
+                                    after a cut, peak memory: DIR/realtime.csv, .md, .png
 
 exit codes: 0 success, 2 bad input, 1 internal failure
 )";

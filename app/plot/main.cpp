@@ -8,10 +8,13 @@
 //                   the targets as dashed lines;
 //   resection.png   `resect bench resection`: worst radius ratio, shortest edge (both log) and
 //                   tets of the remaining tissue, over the input's, against the pass; one line
-//                   per mesh (line and marker style) and method (colour).
+//                   per mesh (line and marker style) and method (colour);
+//   realtime.png    `resect bench realtime`: log-log, the real-time factor against tets per
+//                   integrator and step (lines through the boxes, dots for the samples) with a
+//                   line at 1x, and the projective-dynamics factorisation costs.
 //
 //   resect-plot [--accuracy accuracy_time.csv] [--scaling scaling.csv]
-//               [--resection resection.csv] --out DIR
+//               [--resection resection.csv] [--realtime realtime.csv] --out DIR
 //
 // VTK 9.1 on Debian renders through GLX, so this needs an X display (run it under
 // `xvfb-run -a` on a headless machine; `resect bench` does). It checks the display and GLX
@@ -438,6 +441,115 @@ void plotResection(const Csv& csv, const std::string& dir) {
     writePng(panels.view, dir + "/resection.png");
 }
 
+/// The colour of an integrator (and iteration count) in realtime.png.
+Rgb integratorColour(const std::string& integrator, const std::string& iterations) {
+    if (integrator == "projective-dynamics")
+        return iterations == "1" ? kSnap : iterations == "5" ? kEnhanced : kRelax;
+    return integrator == "backward-euler" ? kSubdivision : kStandard;
+}
+
+/// "1 ms", "1/60 s" or the step in s (the CSV holds six significant digits).
+std::string stepText(double dt) {
+    if (std::abs(dt - 0.001) < 1e-5 * dt)
+        return "1 ms";
+    if (std::abs(dt - 1.0 / 60) < 1e-5 * dt)
+        return "1/60 s";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g s", dt);
+    return buf;
+}
+
+/// Adds a series per key of `rows` (x = tets): a line through the boxes (mesh box-*) and, in the
+/// same colour and line type but without a legend entry, dots for the other meshes.
+void addBoxesAndSamples(vtkChart* chart, const std::string& label, const Points& boxes,
+                        const Points& others, Rgb colour, bool dashed) {
+    if (vtkPlot* line = addSeries(chart, label, boxes, colour, Style::LineAndMarkers, true, true))
+        if (dashed)
+            line->GetPen()->SetLineType(vtkPen::DASH_LINE);
+    if (vtkPlot* dots = addSeries(chart, label + " (samples)", others, colour, Style::Markers, true, true,
+                                  false)) {
+        dots->SetLegendVisibility(boxes.empty());
+        if (auto* p = vtkPlotPoints::SafeDownCast(dots))
+            p->SetMarkerStyle(dashed ? vtkPlotPoints::SQUARE : vtkPlotPoints::CIRCLE);
+    }
+}
+
+/// Fixes a log axis to the data's range [lo, hi] widened by half on each side: the automatic
+/// range puts the extreme points on the frame, where the frame hides them.
+void fixLogRange(vtkChart* chart, int axis, double lo, double hi) {
+    if (!(lo > 0) || !(hi >= lo) || !std::isfinite(hi))
+        return;
+    vtkAxis* a = chart->GetAxis(axis);
+    a->SetBehavior(vtkAxis::FIXED);
+    a->SetUnscaledRange(lo / 1.5, hi * 1.5);
+}
+
+void plotRealtime(const Csv& csv, const std::string& dir) {
+    // series: integrator, iterations, step (the explicit step differs per mesh: one series)
+    std::vector<std::tuple<std::string, std::string, std::string>> keys;
+    const auto keyOf = [&](int r) {
+        const std::string integrator = csv.text(r, "integrator");
+        return std::tuple{integrator, csv.text(r, "iterations"),
+                          integrator == "symplectic-euler" ? std::string("its stable step")
+                                                           : stepText(csv.number(r, "dt"))};
+    };
+    for (int r = 0; r < csv.rows(); ++r)
+        if (std::find(keys.begin(), keys.end(), keyOf(r)) == keys.end())
+            keys.push_back(keyOf(r));
+    Panels panels(2, 1600, 640);
+    vtkChart* factor = panels.chart(0);
+    setupChart(factor, "Real-time factor (lines: boxes; dots: samples, cut or not)", "tets",
+               "simulated s per wall s", true, true);
+    double lo = INFINITY, hi = 0, low = INFINITY, high = 0; // tets, factors
+    for (const auto& key : keys) {
+        const auto& [integrator, iterations, step] = key;
+        Points boxes, others;
+        for (int r = 0; r < csv.rows(); ++r) {
+            if (keyOf(r) != key || csv.text(r, "diverged") != "0")
+                continue;
+            const double tets = csv.number(r, "tets");
+            lo = std::min(lo, tets);
+            hi = std::max(hi, tets);
+            const double factor = csv.number(r, "realtime_factor");
+            low = std::min(low, factor);
+            high = std::max(high, factor);
+            (csv.text(r, "mesh").rfind("box-", 0) == 0 ? boxes : others).emplace_back(tets, factor);
+        }
+        const std::string label = integrator + (iterations.empty() ? "" : " " + iterations + " it") +
+                                  ", " + step;
+        addBoxesAndSamples(factor, label, boxes, others, integratorColour(integrator, iterations),
+                           step == "1/60 s");
+    }
+    if (hi > 0)
+        addSeries(factor, "real time (1x)", {{lo, 1.0}, {hi, 1.0}}, Rgb{80, 80, 80}, Style::Dashed, true,
+                  true);
+    fixLogRange(factor, vtkAxis::BOTTOM, lo, hi);
+    fixLogRange(factor, vtkAxis::LEFT, std::min(low, 1.0), std::max(high, 1.0));
+
+    vtkChart* cost = panels.chart(1);
+    setupChart(cost, "Projective dynamics: factorisation (1 ms step)", "tets", "ms", true, true);
+    if (auto* xy = vtkChartXY::SafeDownCast(cost)) // the costs rise to the right
+        xy->GetLegend()->SetHorizontalAlignment(vtkChartLegend::LEFT);
+    low = INFINITY, high = 0;
+    for (const char* column : {"factor_ms", "refactor_ms"}) {
+        Points boxes, others;
+        for (int r = 0; r < csv.rows(); ++r)
+            if (csv.text(r, "integrator") == "projective-dynamics" && csv.text(r, "iterations") == "5" &&
+                stepText(csv.number(r, "dt")) == "1 ms" && !csv.text(r, column).empty()) {
+                const double ms = csv.number(r, column);
+                low = std::min(low, ms);
+                high = std::max(high, ms);
+                (csv.text(r, "mesh").rfind("box-", 0) == 0 ? boxes : others)
+                    .emplace_back(csv.number(r, "tets"), ms);
+            }
+        addBoxesAndSamples(cost, std::string(column) == "factor_ms" ? "first factorisation" : "after a cut",
+                           boxes, others, std::string(column) == "factor_ms" ? kEnhanced : kSubdivision, false);
+    }
+    fixLogRange(cost, vtkAxis::BOTTOM, lo, hi);
+    fixLogRange(cost, vtkAxis::LEFT, low, high);
+    writePng(panels.view, dir + "/realtime.png");
+}
+
 /// Fails unless an X display with GLX is reachable (VTK 9.1 aborts without one).
 void requireDisplay() {
     if (const std::string problem = resect::plot::displayProblem(); !problem.empty())
@@ -447,7 +559,7 @@ void requireDisplay() {
 } // namespace
 
 int main(int argc, char** argv) {
-    std::string accuracyPath, scalingPath, resectionPath, outDir;
+    std::string accuracyPath, scalingPath, resectionPath, realtimePath, outDir;
     try {
         for (int i = 1; i < argc; ++i) {
             const std::string a = argv[i];
@@ -462,22 +574,24 @@ int main(int argc, char** argv) {
                 scalingPath = value();
             else if (a == "--resection")
                 resectionPath = value();
+            else if (a == "--realtime")
+                realtimePath = value();
             else if (a == "--out")
                 outDir = value();
             else if (a == "--help" || a == "-h") {
                 std::puts(
                     "usage: resect-plot [--accuracy accuracy_time.csv] [--scaling scaling.csv] "
-                    "[--resection resection.csv] --out DIR");
+                    "[--resection resection.csv] [--realtime realtime.csv] --out DIR");
                 return 0;
             } else
                 throw Failure{2, "unknown option " + a};
         }
         if (outDir.empty())
             throw Failure{2, "--out DIR is required"};
-        if (accuracyPath.empty() && scalingPath.empty() && resectionPath.empty())
-            throw Failure{2, "nothing to plot: give --accuracy, --scaling and/or --resection"};
+        if (accuracyPath.empty() && scalingPath.empty() && resectionPath.empty() && realtimePath.empty())
+            throw Failure{2, "nothing to plot: give --accuracy, --scaling, --resection and/or --realtime"};
         // Read everything first: bad input is reported before any rendering.
-        Csv accuracy, scaling, resection;
+        Csv accuracy, scaling, resection, realtime;
         std::vector<std::string> meshes;
         if (!accuracyPath.empty()) {
             accuracy = Csv::read(accuracyPath);
@@ -495,6 +609,12 @@ int main(int argc, char** argv) {
                      {"pass", "worst_ratio_rel", "shortest_edge_rel", "tets_rel"})
                     resection.number(r, column);
         }
+        if (!realtimePath.empty()) {
+            realtime = Csv::read(realtimePath);
+            for (int r = 0; r < realtime.rows(); ++r)
+                for (const char* column : {"tets", "dt", "realtime_factor"})
+                    realtime.number(r, column);
+        }
         requireDisplay();
         for (const std::string& mesh : meshes) {
             plotCost(accuracy, mesh, outDir);
@@ -504,6 +624,8 @@ int main(int argc, char** argv) {
             plotScaling(scaling, outDir);
         if (!resectionPath.empty())
             plotResection(resection, outDir);
+        if (!realtimePath.empty())
+            plotRealtime(realtime, outDir);
         return 0;
     } catch (const Failure& f) {
         std::fprintf(stderr, "resect-plot: %s\n", f.message.c_str());

@@ -37,6 +37,20 @@ inline QByteArray sha256(const QString& path) {
     return f.open(QIODevice::ReadOnly) ? QCryptographicHash::hash(f.readAll(), QCryptographicHash::Sha256) : QByteArray();
 }
 
+/// The non-empty lines of a text file (none if it cannot be read).
+inline QStringList readLines(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    return QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+}
+
+/// Writes `bytes` to a file, replacing it; false if it cannot.
+inline bool writeFile(const QString& path, const QByteArray& bytes) {
+    QFile f(path);
+    return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
+}
+
 /// The JSON object in a file (empty if it cannot be read).
 inline QJsonObject readJsonFile(const QString& path) {
     QFile f(path);

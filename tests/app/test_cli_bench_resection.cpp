@@ -18,13 +18,6 @@ using namespace resect::testing;
 
 namespace {
 
-QStringList lines(const QString& path) {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return {};
-    return QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
-}
-
 /// One CSV row by column name.
 using Row = QMap<QString, QString>;
 
@@ -40,7 +33,7 @@ private slots:
                               out, "--no-plots"});
         QVERIFY2(r.code == 0, qPrintable(r.err));
 
-        const QStringList csv = lines(out + "/resection.csv");
+        const QStringList csv = readLines(out + "/resection.csv");
         QCOMPARE(csv.size(), 1 + 3 * 3); // header, 3 passes x 3 methods
         // The message column is the last and empty when the cut succeeded: keep empty cells.
         const QStringList header = csv.front().split(',');
@@ -102,7 +95,7 @@ private slots:
             QVERIFY2(row["worst_ratio_rel"].toDouble() >= 0.5,
                      qPrintable(row["pass"] + ": " + row["worst_ratio_rel"]));
 
-        const QString md = lines(out + "/resection.md").join('\n');
+        const QString md = readLines(out + "/resection.md").join('\n');
         QVERIFY(md.contains("| polyp | subdivision | 3 |"));
         QVERIFY(md.contains("| polyp | hybrid+improve | min over 3 |"));
         QVERIFY(r.out.contains("| mesh | method | pass |"));
