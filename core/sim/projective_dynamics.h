@@ -7,22 +7,21 @@
 // constraint. Projective dynamics writes a term as the distance of its nodes from the set
 // where the constraint holds,
 //   E_i = w_i / 2 | A_i x - p_i |^2,   p_i = the projection of A_i x onto { C = C0 },
-// where A_i takes the term's nodes relative to their centroid (an edge: the edge vector).
-//   edge (a, b):   p = l0 d / |d| for d = x_b - x_a: E_i = k/2 (|d| - l0)^2 exactly, w = k.
-//   tet, triangle: p = the nodes moved along grad C by (C - C0) / |grad C0|^2 (one Newton
-//                  step towards the set, with the rest gradient's length), w = k |grad C0|^2:
-//                  w (A_i x - p_i) = k (C - C0) grad C is then exactly the model's force,
-//                  so a converged step is the model's backward Euler step and a settled
-//                  state the model's equilibrium (the local step is the model's gradient and
-//                  the constant matrix a fixed approximation of its Hessian: the
-//                  quasi-Newton view of Liu, Bouaziz and Kavan 2017).
-// Backward Euler, x' = argmin 1/(2h^2) |x - y|_M^2 + sum E_i with y = x + h v + h^2 M^-1 f_ext,
-// is then solved by alternating the local projections (independent per term) with a global
-// solve of
-//   (M / h^2 + sum w_i A_i^T A_i) x = M / h^2 y + sum w_i A_i^T p_i,
-// whose matrix is the same for x, y and z and constant while the mesh, the masses and h do
-// not change: it is factored once (sparse Cholesky, LDL^T with a fill-reducing ordering) and
-// every iteration costs two triangular solves. v' = (x' - x) / h.
+// where A_i takes the term's nodes relative to their centroid (an edge: the edge vector):
+//   edge (a, b):   p = l0 d / |d| for d = x_b - x_a: E_i = k/2 (|d| - l0)^2 exactly, w = k;
+//   tet, triangle: p = the nodes moved along grad C by (C - C0) / |grad C0|^2 (a Newton step
+//                  towards the set), w = k |grad C0|^2;
+// with these, w_i A_i^T (A_i x - p_i) is exactly the term's force of forces.h. Backward Euler,
+//   x' = argmin 1/(2h^2) |x - y|_M^2 + E(x),   y = x + h v + h^2 M^-1 f_ext,
+// is solved by local-global iterations, the global step solving
+//   (M / h^2 + sum w_i A_i^T A_i) x = M / h^2 y + sum w_i A_i^T p_i.
+// Written with the forces this is x += S^-1 (M / h^2 (y - x) + f(x)), S the matrix on the left
+// (the quasi-Newton view of Liu, Bouaziz and Kavan 2017): the local step is the model's force
+// evaluation (the deformation effect's vectorised, threaded kernels), and a converged step is
+// the model's own backward-Euler step. S is the same for x, y and z and constant while the
+// mesh, the masses and h do not change: it is factored once (sparse LDL^T with a
+// fill-reducing ordering) and every iteration costs a force evaluation and two triangular
+// solves of three columns at once. v' = (x' - x) / h.
 //
 // External forces (gravity, damping, the other effects) enter y, evaluated at the start of
 // the step. Constrained nodes (an effect's constrain() zeroes them: anchors) and nodes without
@@ -40,6 +39,7 @@
 #include "core/mesh/tet_mesh.h"
 #include "core/status.h"
 
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -83,12 +83,14 @@ public:
     /// velocities are updated.
     /// backupX, backupV: #nodes or empty; receive the state before the step.
     /// Fails (state untouched) only if the system cannot be factored.
+    /// forces(x, f): f += the model's forces at x (all nodes), returns its energy.
+    using Forces = std::function<double(std::span<Vec3> x, std::span<Vec3> f)>;
     Status step(TetMesh& mesh, const DeformationModel& model, std::span<const char> fixed,
                 std::span<const Vec3> fext, double h, const ProjectiveDynamicsOptions& options,
-                int threads, std::span<Vec3> backupX, std::span<Vec3> backupV);
+                int threads, std::span<Vec3> backupX, std::span<Vec3> backupV, const Forces& forces);
 
     const ProjectiveDynamicsStats& stats() const { return m_stats; }
-    /// The model's energy (forces.h) at the positions of the last iteration's local step.
+    /// The model's energy (forces.h) at the end of the last step.
     double energy() const { return m_energy; }
 
 private:
