@@ -25,8 +25,8 @@
 //
 // External forces (gravity, damping, the other effects) enter y, evaluated at the start of
 // the step. Constrained nodes (an effect's constrain() zeroes them: anchors) and nodes without
-// mass are eliminated from the system: they keep their position, and their terms' coupling
-// moves to the right-hand side. Each step starts from x + h v (not from y: the settled state is
+// mass are eliminated from the system: they keep their position (the iterations change only
+// the free nodes). Each step starts from x + h v (not from y: the settled state is
 // then exactly the model's equilibrium whatever the number of iterations), or from x where
 // that is better for the objective below (violent motion at large steps), and no iterate may
 // raise the backward-Euler objective 1/(2h^2) |x - y|_M^2 + E(x) (one that does is pulled back
