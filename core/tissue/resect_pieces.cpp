@@ -164,25 +164,115 @@ void makeRigidBody(Chip& chip) {
         chip.surfaceLocal.push_back(p - b.centre);
 }
 
-void stepChips(std::vector<Chip>& chips, double h, const Vec3& gravity, double floor) {
+void RestingSurface::build(std::span<const Tri> triangles, std::span<const Vec3> positions) {
+    m_triangles.clear();
+    double edges = 0;
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const Tri& t : triangles) {
+        const std::array<Vec3, 3> p{positions[t[0]], positions[t[1]], positions[t[2]]};
+        if (!((p[1] - p[0]).cross(p[2] - p[0]).z() > 0))
+            continue; // only surfaces facing up carry a chip
+        m_triangles.push_back(p);
+        for (int k = 0; k < 3; ++k) {
+            lo = lo.cwiseMin(p[k]);
+            hi = hi.cwiseMax(p[k]);
+            edges += (p[(k + 1) % 3] - p[k]).head<2>().norm();
+        }
+    }
+    m_begin.clear();
+    m_items.clear();
+    if (m_triangles.empty())
+        return;
+    m_lo = lo;
+    m_cell = std::max(edges / (3.0 * m_triangles.size()), 1e-9);
+    m_nx = std::min(4096, static_cast<int>((hi.x() - lo.x()) / m_cell) + 1);
+    m_ny = std::min(4096, static_cast<int>((hi.y() - lo.y()) / m_cell) + 1);
+    m_cell = std::max({m_cell, (hi.x() - lo.x()) / m_nx, (hi.y() - lo.y()) / m_ny}) * (1 + 1e-9);
+    const auto range = [&](const std::array<Vec3, 3>& p, int& x0, int& x1, int& y0, int& y1) {
+        const double ax = std::min({p[0].x(), p[1].x(), p[2].x()}), bx = std::max({p[0].x(), p[1].x(), p[2].x()});
+        const double ay = std::min({p[0].y(), p[1].y(), p[2].y()}), by = std::max({p[0].y(), p[1].y(), p[2].y()});
+        x0 = std::clamp(static_cast<int>((ax - m_lo.x()) / m_cell), 0, m_nx - 1);
+        x1 = std::clamp(static_cast<int>((bx - m_lo.x()) / m_cell), 0, m_nx - 1);
+        y0 = std::clamp(static_cast<int>((ay - m_lo.y()) / m_cell), 0, m_ny - 1);
+        y1 = std::clamp(static_cast<int>((by - m_lo.y()) / m_cell), 0, m_ny - 1);
+    };
+    m_begin.assign(static_cast<std::size_t>(m_nx) * m_ny + 1, 0);
+    for (const auto& p : m_triangles) {
+        int x0, x1, y0, y1;
+        range(p, x0, x1, y0, y1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x)
+                ++m_begin[static_cast<std::size_t>(y) * m_nx + x + 1];
+    }
+    for (std::size_t c = 1; c < m_begin.size(); ++c)
+        m_begin[c] += m_begin[c - 1];
+    m_items.resize(m_begin.back());
+    std::vector<int> fill(m_begin.begin(), m_begin.end() - 1);
+    for (int i = 0; i < static_cast<int>(m_triangles.size()); ++i) {
+        int x0, x1, y0, y1;
+        range(m_triangles[i], x0, x1, y0, y1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x)
+                m_items[fill[static_cast<std::size_t>(y) * m_nx + x]++] = i;
+    }
+}
+
+double RestingSurface::heightBelow(double x, double y, double z) const {
+    double best = -std::numeric_limits<double>::infinity();
+    if (m_triangles.empty())
+        return best;
+    const int cx = static_cast<int>(std::floor((x - m_lo.x()) / m_cell));
+    const int cy = static_cast<int>(std::floor((y - m_lo.y()) / m_cell));
+    if (cx < 0 || cy < 0 || cx >= m_nx || cy >= m_ny)
+        return best;
+    const std::size_t c = static_cast<std::size_t>(cy) * m_nx + cx;
+    for (int k = m_begin[c]; k < m_begin[c + 1]; ++k) {
+        const auto& p = m_triangles[m_items[k]];
+        // Barycentric coordinates of (x, y) in the triangle's projection (counter-clockwise:
+        // it faces up).
+        const double d = (p[1].x() - p[0].x()) * (p[2].y() - p[0].y()) - (p[2].x() - p[0].x()) * (p[1].y() - p[0].y());
+        if (!(d > 0))
+            continue;
+        const double b1 = ((x - p[0].x()) * (p[2].y() - p[0].y()) - (p[2].x() - p[0].x()) * (y - p[0].y())) / d;
+        const double b2 = ((p[1].x() - p[0].x()) * (y - p[0].y()) - (x - p[0].x()) * (p[1].y() - p[0].y())) / d;
+        if (b1 < 0 || b2 < 0 || b1 + b2 > 1)
+            continue;
+        const double h = p[0].z() + b1 * (p[1].z() - p[0].z()) + b2 * (p[2].z() - p[0].z());
+        if (h <= z && h > best)
+            best = h;
+    }
+    return best;
+}
+
+void stepChips(std::vector<Chip>& chips, double h, const Vec3& gravity, double floor, const RestingSurface* tissue) {
     constexpr double kFriction = 0.5;  ///< tangential velocity kept per contact step
     for (Chip& chip : chips) {
         RigidBody& b = chip.body;
         if (!(b.mass > 0) || b.resting)
             continue;
+        const Eigen::Matrix3d before = b.orientation.toRotationMatrix();
+        const Vec3 centreBefore = b.centre;
         b.velocity += h * gravity;
         b.centre += h * b.velocity;
         const double w = b.angularVelocity.norm();
         if (w > 0)
             b.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(h * w, b.angularVelocity / w)) * b.orientation;
         b.orientation.normalize();
-        // Contact with the floor: the lowest node is put back on it and the body stops falling.
+        // Contact with the support (the floor, or the tissue's surface under where the node
+        // was before the step): the deepest node is put back on it and the body stops falling.
         const Eigen::Matrix3d R = b.orientation.toRotationMatrix();
-        double lowest = std::numeric_limits<double>::infinity();
-        for (const Vec3& p : b.local)
-            lowest = std::min(lowest, (b.centre + R * p).z());
-        if (lowest < floor) {
-            b.centre.z() += floor - lowest;
+        double lift = 0;
+        for (const Vec3& q : b.local) {
+            const Vec3 p = b.centre + R * q;
+            double support = floor;
+            if (tissue) {
+                const Vec3 was = centreBefore + before * q;
+                support = std::max(support, tissue->heightBelow(p.x(), p.y(), std::max(was.z(), p.z())));
+            }
+            lift = std::max(lift, support - p.z());
+        }
+        if (lift > 0) {
+            b.centre.z() += lift;
             if (b.velocity.z() < 0)
                 b.velocity.z() = 0;
             b.velocity.x() *= kFriction;

@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include <string>
+#include <span>
 #include <vector>
 
 namespace resect {
@@ -64,10 +65,32 @@ Resection resectPieces(TetMesh& mesh, const Components& pieces, const Anchors& a
 /// with their mass spread evenly); its nodes and surface in the body frame.
 void makeRigidBody(Chip& chip);
 
+/// The tissue's upward-facing boundary triangles at their current positions, in a grid over
+/// (x, y): what a falling chip lands on. Building it is O(triangles); a query looks at one
+/// cell.
+class RestingSurface {
+public:
+    /// triangles: the tissue's boundary triangles (outward oriented), positions: current.
+    void build(std::span<const Tri> triangles, std::span<const Vec3> positions);
+    /// The highest point of the surface on the vertical through (x, y) that is not above z;
+    /// -infinity if there is none.
+    double heightBelow(double x, double y, double z) const;
+    bool empty() const { return m_triangles.empty(); }
+
+private:
+    std::vector<std::array<Vec3, 3>> m_triangles;
+    Vec3 m_lo = Vec3::Zero();
+    double m_cell = 1;
+    int m_nx = 0, m_ny = 0;
+    std::vector<int> m_begin, m_items; ///< per cell (CSR): the triangles over it
+};
+
 /// One step of h seconds of every chip's rigid body under gravity (mm/s^2), resting on the
-/// plane z = floor: semi-implicit Euler, with the chip's nodes kept above the floor by a
-/// position correction of the body and friction that stops it. Moves the chips' nodes and
-/// surfaces. O(chip nodes).
-void stepChips(std::vector<Chip>& chips, double h, const Vec3& gravity, double floor);
+/// plane z = floor and, if given, on the tissue's surface (a chip lands on the tissue and stays
+/// there; the tissue does not feel it): semi-implicit Euler, with the chip's nodes kept above
+/// the support by a position correction of the body and friction that stops it. Moves the
+/// chips' nodes and surfaces. O(chip nodes).
+void stepChips(std::vector<Chip>& chips, double h, const Vec3& gravity, double floor,
+               const RestingSurface* tissue = nullptr);
 
 } // namespace resect

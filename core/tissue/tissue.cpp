@@ -397,7 +397,19 @@ Status Tissue::step(double h) {
         return s;
     if (m_resected == ResectedPieces::Rigid && !m_chips.empty()) {
         const bool gravity = std::find(m_setup.effects.begin(), m_setup.effects.end(), "gravity") != m_setup.effects.end();
-        stepChips(m_chips, h, gravity ? m_setup.settings.gravity : Vec3::Zero(), m_floor);
+        const bool falling = std::any_of(m_chips.begin(), m_chips.end(), [](const Chip& c) { return !c.body.resting; });
+        if (falling) {
+            // Chips land on the tissue: its surface as it is now (O(boundary) per step while a
+            // chip falls; the boundary itself is found once per cut).
+            if (m_restingCut != cutCount()) {
+                m_restingTris.clear();
+                for (const BoundaryFace& f : boundaryFaces(*m_mesh))
+                    m_restingTris.push_back(f.nodes);
+                m_restingCut = cutCount();
+            }
+            m_resting.build(m_restingTris, m_mesh->positions());
+        }
+        stepChips(m_chips, h, gravity ? m_setup.settings.gravity : Vec3::Zero(), m_floor, falling ? &m_resting : nullptr);
     }
     return Status::success();
 }

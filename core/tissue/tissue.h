@@ -180,6 +180,11 @@ private:
     std::vector<Chip> m_chips;
     double m_resectedVolume = 0, m_resectedMass = 0;
     double m_floor = 0;         ///< z of the tissue's lowest node as created: where chips come to rest
+    /// What rigid chips land on: the tissue's boundary triangles (found again after every cut:
+    /// m_restingCut is the cut count they were found at, -1 none) at their current positions.
+    std::vector<Tri> m_restingTris;
+    int m_restingCut = -1;
+    RestingSurface m_resting;
     double m_inputWorstRatio = 0, m_inputShortestEdge = 0;  ///< of the tissue as created
     int m_stepsSeen = 0;        ///< simulator steps when the tissue last looked
     bool m_indexStale = false;  ///< the tets moved since the spatial index was built
