@@ -1,5 +1,6 @@
 #include "widgets/simulation_panel.h"
 
+#include "core/tissue/tissue.h"
 #include "scenario/scenario_document.h"
 #include "widgets/scenario_document.h"
 #include "widgets/simulation_controller.h"
@@ -142,6 +143,10 @@ void SimulationPanel::updateFigures() {
     QStringList parts;
     for (const auto& [name, ms] : m_controller.effectMsPerStep())
         parts << tr("%1: %2 ms").arg(QString::fromStdString(name), number(ms, 2));
+    // The integrator's own work (node passes; for the implicit one, its iterations and solves,
+    // which evaluate the deformation forces themselves).
+    if (const Simulator* sim = m_controller.tissue().simulator(); sim && sim->stepsTaken() > 0)
+        parts << tr("integrator: %1 ms").arg(number(sim->integrateMsTotal() / sim->stepsTaken(), 2));
     if (m_controller.msPerSimulatedSecond() > 0)
         parts << tr("%1 ms per simulated second").arg(number(m_controller.msPerSimulatedSecond()));
     m_cost->setText(parts.join(QLatin1Char('\n')));

@@ -472,6 +472,8 @@ private slots:
         QVERIFY(realTime);
         QVERIFY2(realTime->text().contains(QStringLiteral("x real time")), qPrintable(realTime->text()));
         QVERIFY2(realTime->text().contains(QStringLiteral("implicit, 5 iterations")), qPrintable(realTime->text()));
+        auto* cost = panel->findChild<QLabel*>(QStringLiteral("simCost"));
+        QVERIFY2(cost && cost->text().contains(QStringLiteral("integrator: ")), qPrintable(cost->text()));
 
         // Undoing the effect edit rebuilds the simulation without gravity, at time 0.
         s.action("undo")->trigger();
