@@ -146,12 +146,9 @@ public:
     Status simulate(double span, const std::function<std::vector<Vec3>(double)>& pose) {
         if (span <= 0 || m_diverged)
             return Status::success();
-        // The stable estimate holds for small deformations; a tool pushing surface nodes by
-        // projection deforms small elements strongly within a step, so an explicit
-        // integrator at "stable" keeps the margin the simulator advises.
-        double dt = m_sim->timeStep();
-        if (m_plan.simulation.dt <= 0 && m_tool && isExplicit(m_plan.simulation.integrator))
-            dt *= kLargeDeformationMargin;
+        // At the stable step the simulator sub-steps where the deformed tissue needs it
+        // (simulator.h, "Time step"), tool contact included.
+        const double dt = m_sim->timeStep();
         if (!(dt > 0) || !std::isfinite(dt))
             return Status::error("the simulation has no usable time step");
         const long long steps = static_cast<long long>(std::ceil(span / dt - kStepCountSlack));
@@ -171,6 +168,7 @@ public:
                 return Status::success();
             }
             ++m_out.steps;
+            m_out.substeps += m_sim->lastStep().substeps;
             m_out.dt = h;
             m_out.kineticMax = std::max(m_out.kineticMax, m_sim->lastStep().kineticEnergy);
             m_out.maxSpeed = std::max(m_out.maxSpeed, m_sim->lastStep().maxSpeed);

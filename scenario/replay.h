@@ -10,9 +10,9 @@
 // Between strokes and after the last one the tool is withdrawn (moved above the tissue by
 // twice the tissue's size). After all strokes the simulation runs for `duration` seconds.
 //
-// Time step: the plan's, or the stable explicit step; with tool contact and an explicit
-// integrator, 0.8 times it (the stable estimate holds for small deformations, and the tool's
-// projection deforms the small elements next to a cut strongly within one step).
+// Time step: the plan's, or the stable explicit step, which the simulator keeps stable where
+// the tissue deforms (sub-steps, core/sim/simulator.h); `steps` counts the steps of the plan's
+// time step, `substeps` the integrator's.
 //
 // Resected pieces. A piece a cut separates from every anchored node leaves the tissue as the
 // plan says (`resected`: rigid chips by default, resect_pieces.h).
@@ -75,6 +75,7 @@ struct ReplayOutcome {
     bool finite = true;
     int inverted = 0;
     long long steps = 0;
+    long long substeps = 0;    ///< integrator steps (sub-steps included)
     double dt = 0, stableDt = 0;
     double maxSpeed = 0;
     double kineticInitial = 0, kineticMax = 0, kineticFinal = 0;

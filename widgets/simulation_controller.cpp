@@ -97,9 +97,7 @@ bool SimulationController::followCuts(const TissueState& current, int appended) 
 void SimulationController::updateTimeStep() {
     Simulator* sim = m_tissue.simulator();
     m_stableDt = sim->stableTimeStep();
-    m_dt = sim->timeStep();
-    if (m_explicitStable && sim->findEffect("tool-contact") != nullptr)
-        m_dt *= kLargeDeformationMargin; // as replay does with tool contact (replay.h)
+    m_dt = sim->timeStep(); // the simulator sub-steps where the tissue needs it (simulator.h)
 }
 
 void SimulationController::reset() {
@@ -143,7 +141,6 @@ void SimulationController::reset() {
             emit playingChanged(false);
         return;
     }
-    m_explicitStable = plan.simulation.dt <= 0 && isExplicit(plan.simulation.integrator);
     updateTimeStep();
     done();
 }

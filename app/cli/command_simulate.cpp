@@ -6,7 +6,7 @@
 //     [--resected rigid|remove|deformable]
 //
 // Runs the tissue model (core/sim) for N steps and writes the deformed mesh and a report:
-//   {"steps", "requested_steps", "dt", "stable_dt", "integrator", "threads", "time_s",
+//   {"steps", "requested_steps", "substeps", "dt", "stable_dt", "integrator", "threads", "time_s",
 //    "effects": [{"name", "time_ms"}, ...]   (only the effects run, in run order)
 //    "finite", "max_speed", "kinetic_energy": {"initial", "max", "final"}, "inverted",
 //    "error" (only when the simulation diverged),
@@ -15,9 +15,11 @@
 // speed seen after any step; inverted counts tets with non-positive current volume at the end.
 //
 // Defaults: effects "deformation", integrator explicit (symplectic Euler), dt the stable
-// explicit step of the mesh (also reported as stable_dt). --fix-box anchors the nodes whose
-// reference position lies in the box and adds the "fixed" effect; "fixed" without --fix-box,
-// "tool-contact" without --tool, and --damping without "damping" are bad input.
+// explicit step of the mesh (also reported as stable_dt), which the simulator splits into
+// sub-steps where the deformed tissue needs it ("substeps" counts them all). --fix-box
+// anchors the nodes whose reference position lies in the box and adds the "fixed" effect;
+// "fixed" without --fix-box, "tool-contact" without --tool, and --damping without "damping"
+// are bad input.
 // With --fix-box, pieces of the input without a node in the box are resected (a mesh cut with
 // `resect cut --resected keep`): by default each falls as one rigid body onto the plane under
 // the input's lowest point and is written with the tissue where it came to rest (rigid),
@@ -243,6 +245,7 @@ int runSimulate(Args args) {
     QJsonObject report;
     report["steps"] = sim.stepsTaken();
     report["requested_steps"] = steps;
+    report["substeps"] = static_cast<double>(sim.substepsTaken()); // integrator steps (simulator.h)
     report["dt"] = h;
     report["stable_dt"] = number(stableDt);
     report["integrator"] = integratorName(integrator);

@@ -2,6 +2,7 @@
 
 #include "core/mesh/topology.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -99,7 +100,127 @@ void apply(const TetMesh& mesh, const RestStiffness& s, std::span<const Vec3> x,
     }
 }
 
+/// A fixed pseudo-random field in [-1/2, 1/2)^3 on the nodes of positive weight, zero on the
+/// others: the reproducible start vector of the eigenvalue estimates.
+std::vector<Vec3> pseudoRandomField(const std::vector<double>& weight) {
+    std::vector<Vec3> x(weight.size());
+    std::uint64_t state = 0x853c49e6748fea9bull;
+    auto next = [&state] {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return static_cast<double>(state >> 11) / static_cast<double>(1ull << 53) - 0.5;
+    };
+    for (std::size_t i = 0; i < weight.size(); ++i)
+        x[i] = weight[i] > 0 ? Vec3(next(), next(), next()) : Vec3::Zero();
+    return x;
+}
+
+double dot(std::span<const Vec3> a, std::span<const Vec3> b) {
+    double s = 0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        s += a[i].dot(b[i]);
+    return s;
+}
+
+double squaredNorm(std::span<const Vec3> a) { return dot(a, a); }
+
+/// y -= c x
+void subtract(std::span<Vec3> y, double c, std::span<const Vec3> x) {
+    for (std::size_t i = 0; i < y.size(); ++i)
+        y[i] -= c * x[i];
+}
+
+/// One Lanczos round of at most `steps` products from the unit vector q (mass-weighted
+/// coordinates); returns the largest Ritz value and leaves its unit Ritz vector in q.
+double lanczosRound(const StiffnessProduct& stiffness, const std::vector<double>& invSqrtMass,
+                    std::vector<Vec3>& q, int steps, int& products) {
+    const std::size_t n = q.size();
+    std::vector<std::vector<Vec3>> basis;
+    std::vector<double> alpha, beta;
+    std::vector<Vec3> z(n), w(n);
+    for (int j = 0; j < steps; ++j) {
+        basis.push_back(q);
+        for (std::size_t i = 0; i < n; ++i)
+            z[i] = q[i] * invSqrtMass[i];
+        std::fill(w.begin(), w.end(), Vec3::Zero());
+        stiffness(z, w);
+        ++products;
+        for (std::size_t i = 0; i < n; ++i)
+            w[i] *= invSqrtMass[i];
+        const double a = dot(w, q);
+        alpha.push_back(a);
+        // Full re-orthogonalisation against the basis (which also removes a q and b q_prev).
+        for (const auto& b : basis)
+            subtract(w, dot(w, b), b);
+        const double b = std::sqrt(squaredNorm(w));
+        double scale = 0;
+        for (double v : alpha)
+            scale = std::max(scale, std::abs(v));
+        if (j + 1 == steps || !(b > 1e-10 * scale))
+            break; // the Krylov space is invariant (or complete)
+        beta.push_back(b);
+        for (std::size_t i = 0; i < n; ++i)
+            q[i] = w[i] / b;
+    }
+    const int m = static_cast<int>(alpha.size());
+    Eigen::MatrixXd t = Eigen::MatrixXd::Zero(m, m);
+    for (int i = 0; i < m; ++i) {
+        t(i, i) = alpha[i];
+        if (i + 1 < m)
+            t(i, i + 1) = t(i + 1, i) = beta[i];
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(t);
+    const Eigen::VectorXd y = eigen.eigenvectors().col(m - 1);
+    std::fill(q.begin(), q.end(), Vec3::Zero());
+    for (int j = 0; j < m; ++j)
+        subtract(q, -y[j], basis[j]);
+    const double norm = std::sqrt(squaredNorm(q));
+    if (norm > 0)
+        for (Vec3& v : q)
+            v /= norm;
+    return eigen.eigenvalues()[m - 1];
+}
+
 } // namespace
+
+EigenEstimate largestEigenvalue(const StiffnessProduct& stiffness, std::span<const double> mass,
+                                std::vector<Vec3>& start, const LanczosOptions& options) {
+    EigenEstimate result;
+    const std::size_t n = mass.size();
+    std::vector<double> invSqrtMass(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+        invSqrtMass[i] = mass[i] > 0 ? 1.0 / std::sqrt(mass[i]) : 0.0;
+    start.resize(n, Vec3::Zero());
+    for (std::size_t i = 0; i < n; ++i)
+        if (!(invSqrtMass[i] > 0) || !start[i].allFinite())
+            start[i] = Vec3::Zero();
+    // The start: the given vector mixed with the fixed field (both normalised), or the field.
+    std::vector<Vec3> field = pseudoRandomField(invSqrtMass);
+    const double fieldNorm = std::sqrt(squaredNorm(field));
+    if (!(fieldNorm > 0))
+        return result; // no node with mass
+    const double startNorm = std::sqrt(squaredNorm(start));
+    const double fresh = startNorm > 0 ? std::clamp(options.freshFraction, 0.0, 1.0) : 1.0;
+    std::vector<Vec3> q(n);
+    for (std::size_t i = 0; i < n; ++i)
+        q[i] = (1 - fresh) * (startNorm > 0 ? Vec3(start[i] / startNorm) : Vec3::Zero()) +
+               fresh * field[i] / fieldNorm;
+    const double qNorm = std::sqrt(squaredNorm(q));
+    for (Vec3& v : q)
+        v /= qNorm;
+
+    const int steps = std::max(2, options.steps);
+    double previous = 0;
+    for (int round = 0; round < std::max(1, options.maxRounds); ++round) {
+        const double lambda = lanczosRound(stiffness, invSqrtMass, q, steps, result.products);
+        result.lambdaMax = std::max(result.lambdaMax, lambda);
+        if (round > 0 &&
+            std::abs(lambda - previous) <= options.relativeTolerance * std::abs(lambda))
+            break;
+        previous = lambda;
+    }
+    start = std::move(q);
+    return result;
+}
 
 void applyRestStiffness(const TetMesh& mesh, const Material& material, std::span<const Vec3> x,
                         std::span<Vec3> y, bool areaTerm) {
@@ -145,17 +266,8 @@ StableTimeStep stableTimeStep(const TetMesh& mesh, const Material& material,
 
     // Power iteration on A = M^-1/2 K M^-1/2 (symmetric positive semi-definite). The start
     // vector is a fixed pseudo-random field so that the estimate is reproducible.
-    std::vector<Vec3> x(n), z(n), y(n);
-    std::uint64_t state = 0x853c49e6748fea9bull;
-    auto next = [&state] {
-        state = state * 6364136223846793005ull + 1442695040888963407ull;
-        return static_cast<double>(state >> 11) / static_cast<double>(1ull << 53) - 0.5;
-    };
-    double norm2 = 0;
-    for (int i = 0; i < n; ++i) {
-        x[i] = invSqrtMass[i] > 0 ? Vec3(next(), next(), next()) : Vec3::Zero();
-        norm2 += x[i].squaredNorm();
-    }
+    std::vector<Vec3> x = pseudoRandomField(invSqrtMass), z(n), y(n);
+    double norm2 = squaredNorm(x);
     double rayleigh = 0;
     for (int it = 0; it < options.maxIterations; ++it) {
         const double inv = 1.0 / std::sqrt(norm2);

@@ -15,6 +15,14 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+/// A converged estimate (first step, after a cut) runs Lanczos rounds of this many products,
+/// restarted up to this many rounds until two agree within the tolerance.
+constexpr int kConvergedSteps = 10;
+constexpr int kConvergedRounds = 30;
+constexpr double kConvergedTolerance = 1e-4;
+/// The energy trigger shortens the safe step down to this fraction of the estimate's at most.
+constexpr double kEnergyStepFloor = 0.5;
+
 double msSince(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
@@ -89,6 +97,7 @@ void Simulator::addEffect(std::unique_ptr<Effect> effect) {
     m_effectPotential.assign(m_effects.size(), 0);
     m_forcesValid = false;
     m_needReference = true;
+    m_needConvergedEstimate = true;
 }
 
 int Simulator::nodeThreads() const {
@@ -271,8 +280,15 @@ Status Simulator::projectiveStep(const SimState& s, double h, NodePass& pass, do
         m_held[i] = m_tmp[i] != Vec3::Ones();
     static const DeformationModel kNoTerms;
     const auto* model = deformation ? &static_cast<DeformationEffect*>(deformation)->model() : &kNoTerms;
+    const ProjectiveDynamics::Forces forces = [&](std::span<Vec3> x, std::span<Vec3> f) {
+        if (!deformation)
+            return 0.0;
+        SimState at = s;
+        at.x = x;
+        return deformation->addForces(at, f);
+    };
     if (Status st = m_projective->step(m_mesh, *model, m_held, m_force, h, m_options.projective,
-                                       m_threads, m_backupX, m_backupV);
+                                       m_threads, m_backupX, m_backupV, forces);
         !st.ok())
         return st;
     m_last.solverIterations = m_options.projective.iterations;
@@ -285,30 +301,228 @@ Status Simulator::step() {
     return step(timeStep());
 }
 
+bool Simulator::stableStepping() const {
+    return !(m_options.dt > 0) && isExplicit(m_options.integrator);
+}
+
+double Simulator::currentStableTimeStep() {
+    if (m_needConvergedEstimate || m_lambda < 0)
+        estimateStableStep(true);
+    return m_lambda > 0 ? 2 * m_options.stable.safety / std::sqrt(m_lambda)
+                        : std::numeric_limits<double>::infinity();
+}
+
+void Simulator::estimateStableStep(bool converged) {
+    const auto t0 = Clock::now();
+    const SimState s = state(0);
+    m_probe.resize(static_cast<std::size_t>(m_mesh.nodeCount()));
+    // y = K x = -(df/dx) x over the unconstrained nodes: P K P, symmetric.
+    const StiffnessProduct stiffness = [&](std::span<const Vec3> x, std::span<Vec3> y) {
+        std::copy(x.begin(), x.end(), m_probe.begin());
+        constrainAll(m_probe, false);
+        for (auto& e : m_effects)
+            e->addForceDifferential(s, m_probe, y);
+        constrainAll(y, false);
+        for (Vec3& v : y)
+            v = -v;
+    };
+    const StableSteppingOptions& o = m_options.stable;
+    LanczosOptions lanczos = o.lanczos;
+    if (converged) {
+        lanczos.steps = std::max(lanczos.steps, kConvergedSteps);
+        lanczos.maxRounds = std::max(lanczos.maxRounds, kConvergedRounds);
+        lanczos.relativeTolerance = std::min(lanczos.relativeTolerance, kConvergedTolerance);
+    }
+    const double previous = m_lambda;
+    m_lambda = largestEigenvalue(stiffness, m_mesh.masses(), m_mode, lanczos).lambdaMax;
+    // The held stable step: shorter at once, longer only after `holdEstimates` estimates
+    // that all allow it with a margin (switching sub-step counts back and forth pumps energy
+    // into an oscillating tissue, as the counts follow its stiffness).
+    const double now =
+        m_lambda > 0 ? 2 * o.safety / std::sqrt(m_lambda) : std::numeric_limits<double>::infinity();
+    if (converged || !(m_heldDt > 0) || now <= m_heldDt) {
+        holdStep(now);
+    } else {
+        m_calmLambda = std::max(m_calmLambda, m_lambda);
+        if (++m_calmEstimates >= o.holdEstimates) {
+            m_heldDt =
+                std::max(m_heldDt, 2 * o.safety / std::sqrt(m_calmLambda) / (1 + o.relaxMargin));
+            m_calmLambda = m_lambda;
+            m_calmEstimates = 0;
+        }
+    }
+    // How much lambda moved since the last estimate (relative), for the interval.
+    m_lambdaChange = !converged && previous > 0 ? std::abs(m_lambda - previous) / previous : -1;
+    m_stepsSinceEstimate = 0;
+    m_needConvergedEstimate = false;
+    ++m_estimates;
+    const double ms = msSince(t0);
+    m_last.estimateMs += ms;
+    m_estimateMsTotal += ms;
+}
+
+Status Simulator::substepsFor(double h, int& substeps) {
+    substeps = 1;
+    if (!stableStepping())
+        return Status::success();
+    const bool estimated =
+        m_needConvergedEstimate || m_lambda < 0 || m_stepsSinceEstimate >= m_interval;
+    if (estimated) {
+        const double held = m_heldDt;
+        estimateStableStep(m_needConvergedEstimate || m_lambda < 0);
+        if (m_energyGrew) {
+            // The energy grew although the step was within the estimate (a resonance of the
+            // deformed tissue at h omega near the limit): shorten the step unless the estimate
+            // just did, and mark the energy anew.
+            if (!(m_heldDt < held)) {
+                // At most down to half the estimate's step (resonances near the limit are gone
+                // far above it), so that external work a tool does costs at most twice.
+                const double now = 2 * m_options.stable.safety / std::sqrt(m_lambda);
+                holdStep(std::min(m_heldDt, std::max(m_options.stable.energyStepFactor * m_heldDt,
+                                                     kEnergyStepFloor * now)));
+            }
+            m_energyMark = m_energy;
+            m_energyGrew = false;
+        }
+    }
+    if (!(m_heldDt > 0) || !std::isfinite(m_heldDt))
+        return Status::success(); // nothing stiff (or non-finite: the step reports it)
+    const double ratio = h / m_heldDt;
+    if (!(ratio <= m_options.stable.maxSubsteps))
+        return Status::error("the step " + format(h) + " s needs more than " +
+                             std::to_string(m_options.stable.maxSubsteps) +
+                             " sub-steps at the current configuration (its stable step is " +
+                             format(m_heldDt) +
+                             " s): the tissue has collapsed or diverged; the state is unchanged");
+    substeps = std::max(1, static_cast<int>(std::ceil(ratio / (1 + m_options.stable.tolerance))));
+    if (estimated)
+        scheduleEstimate(h / substeps);
+    return Status::success();
+}
+
+void Simulator::holdStep(double dt) {
+    m_heldDt = dt;
+    m_calmLambda = m_lambda;
+    m_calmEstimates = 0;
+}
+
+void Simulator::scheduleEstimate(double substep) {
+    // Headroom: how much lambda may grow before the sub-step is no longer taken whole. The
+    // interval doubles while the headroom is well above the last change of the estimate and
+    // halves when it is not (lambda oscillates with the tissue: its changes are compared with
+    // the headroom, not extrapolated in time).
+    const StableSteppingOptions& o = m_options.stable;
+    const double use = substep * std::sqrt(std::max(m_lambda, 0.0)) /
+                       (2 * o.safety * (1 + std::max(o.tolerance, 0.0)));
+    const double headroom = use > 0 ? 1 / (use * use) - 1 : std::numeric_limits<double>::infinity();
+    const int lo = std::max(1, o.minInterval), hi = std::max(lo, o.maxInterval);
+    if (m_lambdaChange < 0)
+        m_interval = std::clamp(o.interval, lo, hi);
+    else if (!(headroom > 0) || headroom < 2 * m_lambdaChange)
+        m_interval = std::max(lo, m_interval / 2);
+    else if (headroom > 4 * m_lambdaChange)
+        m_interval = std::min(hi, 2 * m_interval);
+}
+
+void Simulator::ensureReference() {
+    if (!m_needReference)
+        return;
+    // Energy reference for divergence detection (see simulator.h).
+    const double kinetic = kineticEnergy();
+    m_forcePotential = evaluateForces(state(0), m_force, m_forceZero);
+    m_forcesValid = true;
+    m_forceZero = false;
+    m_referenceEnergy = kinetic + m_forcePotential;
+    double totalMass = 0;
+    for (double m : m_mesh.masses())
+        totalMass += m;
+    m_energyScale = totalMass * m_material.stiffness + std::abs(kinetic);
+    for (double p : m_effectPotential)
+        m_energyScale += std::abs(p);
+    m_energy = m_referenceEnergy;
+    // Marked after the first step: the explicit steps monitor the kinetic energy after the
+    // step with the potential before it, which differs from the reference's.
+    m_energyMark = std::numeric_limits<double>::quiet_NaN();
+    m_energyGrew = false;
+    m_needReference = false;
+}
+
 Status Simulator::step(double h) {
     if (!std::isfinite(h) || !(h > 0))
         return Status::error("time step must be finite and positive, got " + format(h));
     ensureBuffers();
     std::fill(m_effectMs.begin(), m_effectMs.end(), 0.0);
+    m_last.estimateMs = 0;
+    ensureReference();
+    int substeps = 1;
+    if (Status s = substepsFor(h, substeps); !s.ok())
+        return s;
+
+    const double start = m_time;
+    Status failure;
+    if (substeps == 1) {
+        failure = integrate(h, 0, 1);
+    } else {
+        const auto n = static_cast<std::size_t>(m_mesh.nodeCount());
+        if (m_options.keepLastGoodState) {
+            m_stepBackupX.assign(m_mesh.positions().begin(), m_mesh.positions().end());
+            m_stepBackupV.assign(m_mesh.velocities().begin(), m_mesh.velocities().end());
+        }
+        const double sub = h / substeps;
+        std::vector<double> effectMs(m_effects.size(), 0.0);
+        double integrateMs = 0, maxSpeed = 0;
+        int iterations = 0;
+        for (int k = 0; k < substeps && failure.ok(); ++k) {
+            if (k > 0)
+                std::fill(m_effectMs.begin(), m_effectMs.end(), 0.0);
+            failure = integrate(sub, k, substeps);
+            if (!failure.ok())
+                break;
+            m_time = start + (k + 1) * sub;
+            for (std::size_t i = 0; i < m_effects.size(); ++i)
+                effectMs[i] += m_last.effects[i].ms;
+            integrateMs += m_last.integrateMs;
+            maxSpeed = std::max(maxSpeed, m_last.maxSpeed);
+            iterations += m_last.solverIterations;
+        }
+        if (!failure.ok()) {
+            if (m_options.keepLastGoodState && m_stepBackupX.size() == n) {
+                std::copy(m_stepBackupX.begin(), m_stepBackupX.end(), m_mesh.positions().begin());
+                std::copy(m_stepBackupV.begin(), m_stepBackupV.end(), m_mesh.velocities().begin());
+            }
+        } else {
+            for (std::size_t i = 0; i < m_effects.size(); ++i)
+                m_last.effects[i].ms = effectMs[i];
+            m_last.integrateMs = integrateMs;
+            m_last.maxSpeed = maxSpeed;
+            m_last.solverIterations = iterations;
+        }
+    }
+    if (!failure.ok()) {
+        m_time = start;
+        m_forcesValid = false;
+        return failure;
+    }
+    m_time = start + h;
+    ++m_steps;
+    m_substeps += substeps;
+    m_stepsSinceEstimate += substeps;
+    m_last.substeps = substeps;
+    // Energy growth since the mark: estimate again at the next step (substepsFor).
+    if (std::isnan(m_energyMark))
+        m_energyMark = m_energy;
+    if (stableStepping() && !m_energyGrew &&
+        m_energy - m_energyMark > m_options.stable.energyTrigger * m_energyScale) {
+        m_energyGrew = true;
+        m_stepsSinceEstimate = std::max(m_stepsSinceEstimate, m_interval);
+    }
+    return Status::success();
+}
+
+Status Simulator::integrate(double h, int substep, int substeps) {
     m_last.solverIterations = 0;
     const SimState s = state(h);
     const auto stepStart = Clock::now();
-
-    if (m_needReference) {
-        // Energy reference for divergence detection (see simulator.h).
-        const double kinetic = kineticEnergy();
-        m_forcePotential = evaluateForces(s, m_force, m_forceZero);
-        m_forcesValid = true;
-        m_forceZero = false;
-        m_referenceEnergy = kinetic + m_forcePotential;
-        double totalMass = 0;
-        for (double m : m_mesh.masses())
-            totalMass += m;
-        m_energyScale = totalMass * m_material.stiffness + std::abs(kinetic);
-        for (double p : m_effectPotential)
-            m_energyScale += std::abs(p);
-        m_needReference = false;
-    }
 
     NodePass pass;
     double potential = 0;
@@ -349,20 +563,32 @@ Status Simulator::step(double h) {
     const bool diverged = !pass.finite || !std::isfinite(energy) ||
                           energy - m_referenceEnergy > m_options.explosionFactor * m_energyScale;
     if (diverged) {
-        std::string message = "the simulation diverged at step " + std::to_string(m_steps + 1) +
-                              " (t = " + format(m_time) + " s): ";
+        std::string message = "the simulation diverged at step " + std::to_string(m_steps + 1);
+        if (substeps > 1)
+            message += " (sub-step " + std::to_string(substep + 1) + " of " +
+                       std::to_string(substeps) + ")";
+        message += " (t = " + format(m_time) + " s): ";
         if (isExplicit(m_options.integrator)) {
             const double stable = stableTimeStep();
-            message += "the time step " + format(h) + " s is too large for the explicit " +
-                       std::string(integratorName(m_options.integrator)) +
-                       " integrator (stable estimate " + format(stable) + " s)";
-            if (h <= stable)
-                message += ", which holds for small deformations: strongly deformed tissue "
-                           "needs a margin (" + format(kLargeDeformationMargin) +
-                           " x the estimate) or the implicit integrator";
-        } else
+            if (stableStepping())
+                message += "the explicit " + std::string(integratorName(m_options.integrator)) +
+                           " step " + format(h) +
+                           " s, within the stable step of the configuration estimated " +
+                           std::to_string(m_stepsSinceEstimate) +
+                           " steps earlier, did not stay bounded (stable estimate at rest " +
+                           format(stable) + " s): the tissue stiffened faster than the " +
+                           "estimates followed; use the implicit integrator";
+            else
+                message += "the time step " + format(h) + " s is too large for the explicit " +
+                           std::string(integratorName(m_options.integrator)) +
+                           " integrator (stable estimate " + format(stable) +
+                           " s at rest; deformed tissue can need less: leave the time step " +
+                           "at its default and the simulator keeps it stable, or use the " +
+                           "implicit integrator)";
+        } else {
             message += "the implicit step " + format(h) + " s did not stay bounded (" +
                        std::to_string(m_last.solverIterations) + " solver iterations)";
+        }
         if (m_options.keepLastGoodState) {
             std::copy(m_backupX.begin(), m_backupX.end(), m_mesh.positions().begin());
             std::copy(m_backupV.begin(), m_backupV.end(), m_mesh.velocities().begin());
@@ -396,8 +622,7 @@ Status Simulator::step(double h) {
     m_last.kineticEnergy = pass.kineticEnergy;
     m_last.potentialEnergy = potential;
     m_last.maxSpeed = pass.maxSpeed;
-    m_time += h;
-    ++m_steps;
+    m_energy = pass.kineticEnergy + potential;
     return Status::success();
 }
 
@@ -407,6 +632,7 @@ void Simulator::applyCut(const CutChanges& changes) {
     ensureBuffers();
     m_forcesValid = false;
     m_needReference = true;
+    m_needConvergedEstimate = true;
     m_fallbackStableDt = 0;
     if (m_projective)
         m_projective->invalidate();
