@@ -4,7 +4,7 @@
 <context>
     <name>resect::AccuracyChart</name>
     <message>
-        <location filename="../widgets/accuracy_chart.cpp" line="+86"/>
+        <location filename="../widgets/accuracy_chart.cpp" line="+78"/>
         <source>Subdivision</source>
         <translation>Unterteilung</translation>
     </message>
@@ -1110,7 +1110,7 @@
 <context>
     <name>resect::QualityCurve</name>
     <message>
-        <location filename="../widgets/quality_curve.cpp" line="+128"/>
+        <location filename="../widgets/quality_curve.cpp" line="+120"/>
         <source>The tissue as created: worst radius ratio %1</source>
         <translation>Das Gewebe im Ausgangszustand: schlechtestes Radienverhältnis %1</translation>
     </message>
@@ -1456,7 +1456,7 @@
 <context>
     <name>resect::SimulationController</name>
     <message>
-        <location filename="../widgets/simulation_controller.cpp" line="+169"/>
+        <location filename="../widgets/simulation_controller.cpp" line="+166"/>
         <source>The simulation has no usable time step.</source>
         <translation>Die Simulation hat keinen verwendbaren Zeitschritt.</translation>
     </message>
@@ -1469,7 +1469,7 @@
 <context>
     <name>resect::SimulationPanel</name>
     <message>
-        <location filename="../widgets/simulation_panel.cpp" line="+23"/>
+        <location filename="../widgets/simulation_panel.cpp" line="+24"/>
         <source>Deformation (mass-spring)</source>
         <translation>Verformung (Masse-Feder)</translation>
     </message>
@@ -1495,12 +1495,12 @@
     </message>
     <message>
         <location line="+14"/>
-        <location line="+80"/>
+        <location line="+84"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-78"/>
+        <location line="-82"/>
         <source>Step</source>
         <translation>Schritt</translation>
     </message>
@@ -1533,6 +1533,11 @@
         <location line="+4"/>
         <source>Per step</source>
         <translation>Pro Schritt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Real time</source>
+        <translation>Echtzeit</translation>
     </message>
     <message>
         <location line="+44"/>
@@ -1570,9 +1575,34 @@
         <translation>%1: %2 ms</translation>
     </message>
     <message>
+        <location line="+4"/>
+        <source>integrator: %1 ms</source>
+        <translation>Integrator: %1 ms</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>%1 ms per simulated second</source>
         <translation>%1 ms pro simulierter Sekunde</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>implicit, 1 iteration a step</source>
+        <translation>implizit, 1 Iteration pro Schritt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>implicit, %1 iterations a step</source>
+        <translation>implizit, %1 Iterationen pro Schritt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1x real time (%2)</source>
+        <translation>%1-fache Echtzeit (%2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not measured yet (%1)</source>
+        <translation>noch nicht gemessen (%1)</translation>
     </message>
 </context>
 <context>

@@ -4,7 +4,7 @@
 <context>
     <name>resect::AccuracyChart</name>
     <message>
-        <location filename="../widgets/accuracy_chart.cpp" line="+86"/>
+        <location filename="../widgets/accuracy_chart.cpp" line="+78"/>
         <source>Subdivision</source>
         <translation>Subdivision</translation>
     </message>
@@ -1110,7 +1110,7 @@
 <context>
     <name>resect::QualityCurve</name>
     <message>
-        <location filename="../widgets/quality_curve.cpp" line="+128"/>
+        <location filename="../widgets/quality_curve.cpp" line="+120"/>
         <source>The tissue as created: worst radius ratio %1</source>
         <translation>Le tissu tel que créé : pire rapport des rayons %1</translation>
     </message>
@@ -1456,7 +1456,7 @@
 <context>
     <name>resect::SimulationController</name>
     <message>
-        <location filename="../widgets/simulation_controller.cpp" line="+169"/>
+        <location filename="../widgets/simulation_controller.cpp" line="+166"/>
         <source>The simulation has no usable time step.</source>
         <translation>La simulation n&apos;a pas de pas de temps utilisable.</translation>
     </message>
@@ -1469,7 +1469,7 @@
 <context>
     <name>resect::SimulationPanel</name>
     <message>
-        <location filename="../widgets/simulation_panel.cpp" line="+23"/>
+        <location filename="../widgets/simulation_panel.cpp" line="+24"/>
         <source>Deformation (mass-spring)</source>
         <translation>Déformation (masses-ressorts)</translation>
     </message>
@@ -1495,12 +1495,12 @@
     </message>
     <message>
         <location line="+14"/>
-        <location line="+80"/>
+        <location line="+84"/>
         <source>Play</source>
         <translation>Lecture</translation>
     </message>
     <message>
-        <location line="-78"/>
+        <location line="-82"/>
         <source>Step</source>
         <translation>Avancer d&apos;un pas</translation>
     </message>
@@ -1533,6 +1533,11 @@
         <location line="+4"/>
         <source>Per step</source>
         <translation>Par pas</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Real time</source>
+        <translation>Temps réel</translation>
     </message>
     <message>
         <location line="+44"/>
@@ -1570,9 +1575,34 @@
         <translation>%1 : %2 ms</translation>
     </message>
     <message>
+        <location line="+4"/>
+        <source>integrator: %1 ms</source>
+        <translation>intégrateur : %1 ms</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>%1 ms per simulated second</source>
         <translation>%1 ms par seconde simulée</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>implicit, 1 iteration a step</source>
+        <translation>implicite, 1 itération par pas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>implicit, %1 iterations a step</source>
+        <translation>implicite, %1 itérations par pas</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1x real time (%2)</source>
+        <translation>%1x le temps réel (%2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not measured yet (%1)</source>
+        <translation>pas encore mesuré (%1)</translation>
     </message>
 </context>
 <context>

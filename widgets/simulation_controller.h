@@ -111,7 +111,6 @@ private:
     /// The current state the simulated tissue was built from or has followed to.
     std::shared_ptr<const TissueState> m_followed;
     bool m_newDocument = false;   ///< a new document's tissue is on its way: rebuild when it comes
-    bool m_explicitStable = false; ///< explicit integrator at the stable step (margin applies)
     double m_dt = 0, m_stableDt = 0;
     double m_speed = 1.0;
     double m_computeMs = 0;
