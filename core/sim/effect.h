@@ -28,6 +28,11 @@ struct SimState {
     std::span<const double> mass;
     double time = 0; ///< s, at the start of the step
     double dt = 0;   ///< s, the step being taken
+    /// The simulator may split a step into sub-steps (explicit integrators, simulator.h): the
+    /// whole step (0: dt) and whether this sub-step ends it. The caller changes the scene (a
+    /// tool's pose) between whole steps only.
+    double stepDt = 0;
+    bool lastSubstep = true;
 };
 
 class Effect {

@@ -521,7 +521,9 @@ Status Simulator::step(double h) {
 
 Status Simulator::integrate(double h, int substep, int substeps) {
     m_last.solverIterations = 0;
-    const SimState s = state(h);
+    SimState s = state(h);
+    s.stepDt = h * substeps;
+    s.lastSubstep = substep + 1 == substeps;
     const auto stepStart = Clock::now();
 
     NodePass pass;

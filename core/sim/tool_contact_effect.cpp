@@ -98,11 +98,14 @@ bool ToolContactEffect::afterStep(const SimState& s) {
     }
     lo.array() -= r;
     hi.array() += r;
-    // Tool velocity at the pose's points, from the pose of the previous step.
+    // Tool velocity at the pose's points, from the pose of the previous step (a whole step:
+    // the pose moves between steps, and a step split into sub-steps moves the tool evenly
+    // over all of them).
     std::vector<Vec3> velocity(pts.size(), Vec3::Zero());
-    if (s.dt > 0)
+    const double interval = s.stepDt > 0 ? s.stepDt : s.dt;
+    if (interval > 0)
         for (std::size_t i = 0; i < pts.size(); ++i)
-            velocity[i] = (pts[i] - m_previous[i]) / s.dt;
+            velocity[i] = (pts[i] - m_previous[i]) / interval;
     const std::size_t segments = pts.size() > 1 ? pts.size() - 1 : 1;
     m_lastContacts = 0;
     for (int n : m_surface) {
@@ -141,7 +144,8 @@ bool ToolContactEffect::afterStep(const SimState& s) {
             ++m_lastContacts;
         }
     }
-    m_previous = pts;
+    if (s.lastSubstep)
+        m_previous = pts;
     return m_lastContacts > 0;
 }
 

@@ -157,6 +157,41 @@ private slots:
         QVERIFY(free.pos(anchored[0]).z() < x0[anchored[0]].z());
     }
 
+    void toolVelocitySpansTheWholeStep() {
+        // A step split into two sub-steps: the tool moved 0.2 mm down between whole steps, so
+        // in both sub-steps a node it pushes gets the tool's speed, 0.2 mm per whole step
+        // (0.2 / 2 ms = 100 mm/s), not twice that in the first and nothing in the second.
+        TetMesh m = simBox(2, 2, 1, 0.0, 1);
+        Tool t;
+        t.points = {Vec3(1, 1, 2.9)};
+        t.radius = 1.0;
+        ToolContactEffect tool(m, t);
+        QVERIFY(tool.setPose(std::vector<Vec3>{Vec3(1, 1, 2.7)}).ok());
+        const int top = [&] {
+            for (int n = 0; n < m.nodeCount(); ++n)
+                if (m.ref(n) == Vec3(1, 1, 1))
+                    return n;
+            return -1;
+        }();
+        QVERIFY(top >= 0);
+        for (int sub = 0; sub < 2; ++sub) {
+            for (Vec3& v : m.velocities())
+                v.setZero();
+            SimState s;
+            s.x = m.positions();
+            s.v = m.velocities();
+            s.mass = m.masses();
+            s.dt = 1e-3;
+            s.stepDt = 2e-3;
+            s.lastSubstep = sub == 1;
+            m.positions()[top] = Vec3(1, 1, 1.75); // inside the sphere (centre z 2.7, radius 1)
+            QVERIFY(tool.afterStep(s));
+            QVERIFY(std::abs(m.pos(top).z() - 1.7) < 1e-12);
+            QVERIFY2(std::abs(m.velocities()[top].z() + 100) < 1e-9,
+                     qPrintable(QString("sub-step %1: %2").arg(sub).arg(m.velocities()[top].z())));
+        }
+    }
+
     void toolPushesSurfaceNodesOut() {
         // A capsule touching the top face (z = 2) of a box held at its bottom, pressed 0.8 mm
         // down over 200 steps and held.
