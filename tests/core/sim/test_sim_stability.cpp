@@ -1,8 +1,9 @@
 // The stability suite (issue 6): named hard cases, each cut with the hybrid method (with
 // snapping and 10 relaxation steps, the product's defaults) and then simulated for thousands
 // of explicit steps at the stable time step (the default, which the simulator sub-steps
-// where a configuration needs it: simulator.h) and for hundreds of implicit steps at ten times
-// it. Each run must stay finite, keep its kinetic energy bounded and end without an inverted
+// where a configuration needs it: simulator.h), for hundreds of backward-Euler steps at ten
+// times it, and with the product's implicit integrator, projective dynamics, for 300 steps of
+// 1 ms and 30 frames of 1/60 s. Each run must stay finite, keep its kinetic energy bounded and end without an inverted
 // tet. Every node starts with a random velocity (5 cm/s) that excites all modes of the mesh,
 // the highest (those of the worst elements, which limit the time step) included. Gravity
 // acts in every case; the bottom layer is anchored except where a case says otherwise.
@@ -193,7 +194,9 @@ struct RunResult {
 };
 
 /// Simulates `steps` steps with the given integrator at `dtFactor` times the stable step.
-RunResult simulate(TetMesh mesh, const HardCase& c, Integrator integrator, double dtFactor, int steps) {
+/// (absoluteDt > 0: that step instead, for the implicit integrator at the product's 1 ms.)
+RunResult simulate(TetMesh mesh, const HardCase& c, Integrator integrator, double dtFactor, int steps,
+                   double absoluteDt = 0) {
     RunResult r;
     const Material material;
     SimulatorOptions so;
@@ -211,7 +214,7 @@ RunResult simulate(TetMesh mesh, const HardCase& c, Integrator integrator, doubl
             qFatal("%s", s.message().c_str());
     }
     const double stable = sim.stableTimeStep();
-    r.dt = dtFactor * stable;
+    r.dt = absoluteDt > 0 ? absoluteDt : dtFactor * stable;
     // Random velocities of 5 cm/s, a brisk tissue motion.
     // (Scaling the speed with 1 / dt instead drives the small elements of a cut far beyond
     // the linear range in which the stable estimate holds.)
@@ -293,6 +296,11 @@ private slots:
         // Implicit at ten times the stable step.
         const RunResult im = simulate(c.mesh, c, Integrator::BackwardEuler, 10.0, 300);
         QVERIFY2(im.failure.isEmpty(), qPrintable("implicit: " + im.failure));
+        // The product's integrator, projective dynamics, at its 1 ms and at a 1/60 s frame.
+        const RunResult pd = simulate(c.mesh, c, Integrator::ProjectiveDynamics, 0, 300, 1e-3);
+        QVERIFY2(pd.failure.isEmpty(), qPrintable("projective dynamics, 1 ms: " + pd.failure));
+        const RunResult frame = simulate(c.mesh, c, Integrator::ProjectiveDynamics, 0, 30, 1.0 / 60);
+        QVERIFY2(frame.failure.isEmpty(), qPrintable("projective dynamics, 1/60 s: " + frame.failure));
 
         // Subdivision on the same case: how much smaller its stable step is.
         const QString subProblem = cut(sub, CutMethod::Subdivision);
@@ -353,6 +361,8 @@ private slots:
         QVERIFY2(ex.failure.isEmpty(), qPrintable("explicit: " + ex.failure));
         const RunResult im = simulate(after.mesh, after, Integrator::BackwardEuler, 10.0, 300);
         QVERIFY2(im.failure.isEmpty(), qPrintable("implicit: " + im.failure));
+        const RunResult pd = simulate(after.mesh, after, Integrator::ProjectiveDynamics, 0, 300, 1e-3);
+        QVERIFY2(pd.failure.isEmpty(), qPrintable("projective dynamics, 1 ms: " + pd.failure));
     }
 
     void piecesReallyFall() {
