@@ -21,8 +21,9 @@
 // "fixed" without --fix-box, "tool-contact" without --tool, and --damping without "damping"
 // are bad input.
 // With --fix-box, pieces of the input without a node in the box are resected (a mesh cut with
-// `resect cut --resected keep`): by default each falls as one rigid body onto the plane under
-// the input's lowest point and is written with the tissue where it came to rest (rigid),
+// `resect cut --resected keep`): by default each falls as one rigid body onto the tissue or
+// the plane under the input's lowest point and is written with the tissue where it came to
+// rest (rigid),
 // or leaves (remove), or is simulated like the rest (deformable).
 //
 // Exit codes: 0 success; 2 bad input (one line naming the option or file); 1 if the
@@ -207,6 +208,12 @@ int runSimulate(Args args) {
         for (int n = 0; n < chip.mesh.nodeCount(); ++n)
             floor = std::min(floor, chip.mesh.ref(n).z());
     const bool rigidChips = resected == ResectedPieces::Rigid && !chips.empty();
+    // What they land on: the tissue's boundary (its topology does not change here).
+    std::vector<Tri> restingTriangles;
+    RestingSurface resting;
+    if (rigidChips)
+        for (const BoundaryFace& f : boundaryFaces(mesh))
+            restingTriangles.push_back(f.nodes);
     SimulatorOptions options;
     options.integrator = integrator;
     options.threads = threads;
@@ -231,8 +238,10 @@ int runSimulate(Args args) {
         failure = sim.step(h);
         if (!failure.ok())
             break;
-        if (rigidChips)
-            stepChips(chips, h, requested("gravity") ? settings.gravity : Vec3::Zero(), floor);
+        if (rigidChips) {
+            resting.build(restingTriangles, mesh.positions());
+            stepChips(chips, h, requested("gravity") ? settings.gravity : Vec3::Zero(), floor, &resting);
+        }
         maxKinetic = std::max(maxKinetic, sim.lastStep().kineticEnergy);
         maxSpeed = std::max(maxSpeed, sim.lastStep().maxSpeed);
         finalKinetic = sim.lastStep().kineticEnergy;

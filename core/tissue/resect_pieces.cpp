@@ -236,7 +236,7 @@ double RestingSurface::heightBelow(double x, double y, double z) const {
         const double b1 = ((x - p[0].x()) * (p[2].y() - p[0].y()) - (p[2].x() - p[0].x()) * (y - p[0].y())) / d;
         const double b2 = ((p[1].x() - p[0].x()) * (y - p[0].y()) - (x - p[0].x()) * (p[1].y() - p[0].y())) / d;
         if (b1 < 0 || b2 < 0 || b1 + b2 > 1)
-            continue;
+            continue;  // (edges included: a chip's node on a vertex of the cut stays on it)
         const double h = p[0].z() + b1 * (p[1].z() - p[0].z()) + b2 * (p[2].z() - p[0].z());
         if (h <= z && h > best)
             best = h;
@@ -262,14 +262,21 @@ void stepChips(std::vector<Chip>& chips, double h, const Vec3& gravity, double f
         // was before the step): the deepest node is put back on it and the body stops falling.
         const Eigen::Matrix3d R = b.orientation.toRotationMatrix();
         double lift = 0;
+        bool onTissue = false;  // the deepest contact is with the tissue, not the floor
         for (const Vec3& q : b.local) {
             const Vec3 p = b.centre + R * q;
             double support = floor;
+            bool tissueHere = false;
             if (tissue) {
                 const Vec3 was = centreBefore + before * q;
-                support = std::max(support, tissue->heightBelow(p.x(), p.y(), std::max(was.z(), p.z())));
+                const double top = tissue->heightBelow(p.x(), p.y(), std::max(was.z(), p.z()));
+                tissueHere = top > floor;
+                support = std::max(support, top);
             }
-            lift = std::max(lift, support - p.z());
+            if (support - p.z() > lift) {
+                lift = support - p.z();
+                onTissue = tissueHere;
+            }
         }
         if (lift > 0) {
             b.centre.z() += lift;
@@ -278,7 +285,8 @@ void stepChips(std::vector<Chip>& chips, double h, const Vec3& gravity, double f
             b.velocity.x() *= kFriction;
             b.velocity.y() *= kFriction;
             b.angularVelocity *= kFriction;
-            if (b.velocity.norm() < 1e-9 * std::max(1.0, gravity.norm()))
+            // At rest on the floor it stays; on the tissue it keeps following the surface.
+            if (!onTissue && b.velocity.norm() < 1e-9 * std::max(1.0, gravity.norm()))
                 b.resting = true;
         }
         for (int n = 0; n < chip.mesh.nodeCount(); ++n) {

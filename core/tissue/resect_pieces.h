@@ -32,7 +32,7 @@ struct RigidBody {
     double mass = 0;                                          ///< g
     Eigen::Matrix3d inertia = Eigen::Matrix3d::Identity();    ///< g mm^2, body frame, about the centre
     std::vector<Vec3> local;                                  ///< the chip's nodes in the body frame
-    bool resting = false;                                     ///< lying on the floor
+    bool resting = false;                                     ///< lying on the floor (for good)
 };
 
 /// A piece that left the tissue.
