@@ -399,8 +399,8 @@ Status Tissue::step(double h) {
         const bool gravity = std::find(m_setup.effects.begin(), m_setup.effects.end(), "gravity") != m_setup.effects.end();
         const bool falling = std::any_of(m_chips.begin(), m_chips.end(), [](const Chip& c) { return !c.body.resting; });
         if (falling) {
-            // Chips land on the tissue: its surface as it is now (O(boundary) per step while a
-            // chip falls; the boundary itself is found once per cut).
+            // Chips land on the tissue: its surface as it is now (O(boundary) per step while a chip
+            // falls or lies on the tissue; the boundary itself is found once per cut).
             if (m_restingCut != cutCount()) {
                 m_restingTris.clear();
                 for (const BoundaryFace& f : boundaryFaces(*m_mesh))
