@@ -56,9 +56,6 @@ struct ProjectiveDynamics::Impl {
     std::vector<int> freeNodes; ///< row -> node
     std::vector<char> fixed;    ///< as given at the last preparation
     std::vector<double> inertia; ///< m / h^2 per row
-    Eigen::SparseMatrix<double> matrix;
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
-
     /// The factor P A P^T = L D L^T, copied out of Eigen for a solve of all three coordinates
     /// at once (one pass over L per triangular solve instead of three).
     std::vector<int> lBegin, lRow, perm;
@@ -173,15 +170,20 @@ Status ProjectiveDynamics::prepare(const TetMesh& mesh, const DeformationModel& 
             addCentred(tr[i].data(), 3, k[i] * gg);
         }
     }
-    d.matrix.resize(rows, rows);
-    d.matrix.setFromTriplets(entries.begin(), entries.end());
-    d.solver.compute(d.matrix);
-    if (d.solver.info() != Eigen::Success)
+    // Factored by Eigen, then copied out (L, D, P): Eigen's copy and the matrix are freed.
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+    {
+        Eigen::SparseMatrix<double> matrix(rows, rows);
+        matrix.setFromTriplets(entries.begin(), entries.end());
+        entries = {};
+        solver.compute(matrix);
+    }
+    if (solver.info() != Eigen::Success)
         return Status::error("projective dynamics: the system matrix (" + std::to_string(rows) +
                              " free nodes) could not be factored");
     {
         // Eigen's LDL^T keeps L's strictly lower part by columns and D apart.
-        const auto& l = d.solver.matrixL().nestedExpression();
+        const auto& l = solver.matrixL().nestedExpression();
         d.lBegin.assign(l.outerIndexPtr(), l.outerIndexPtr() + rows + 1);
         d.lRow.clear(), d.lValue.clear();
         d.lRow.reserve(l.nonZeros()), d.lValue.reserve(l.nonZeros());
@@ -196,11 +198,11 @@ Status ProjectiveDynamics::prepare(const TetMesh& mesh, const DeformationModel& 
                 }
         }
         d.lBegin[rows] = static_cast<int>(d.lRow.size());
-        const auto& diag = d.solver.vectorD();
+        const auto& diag = solver.vectorD();
         d.inverseD.resize(rows);
         for (int i = 0; i < rows; ++i)
             d.inverseD[i] = 1 / diag[i];
-        const auto& indices = d.solver.permutationP().indices();
+        const auto& indices = solver.permutationP().indices();
         d.perm.assign(indices.data(), indices.data() + rows);
     }
 
