@@ -257,12 +257,14 @@ Status Simulator::projectiveStep(const SimState& s, double h, NodePass& pass, do
     if (!m_projective)
         m_projective = std::make_unique<ProjectiveDynamics>();
     // External forces: every effect but the deformation, at the start of the step.
-    Effect* deformation = nullptr;
+    DeformationEffect* deformation = nullptr;
+    std::size_t deformationIndex = 0;
     std::fill(m_force.begin(), m_force.end(), Vec3::Zero());
     potential = 0;
     for (std::size_t i = 0; i < m_effects.size(); ++i) {
-        if (m_effects[i]->name() == "deformation") {
-            deformation = m_effects[i].get();
+        if (auto* d = dynamic_cast<DeformationEffect*>(m_effects[i].get()); d && !deformation) {
+            deformation = d;
+            deformationIndex = i;
             continue;
         }
         const auto t0 = Clock::now();
@@ -279,13 +281,17 @@ Status Simulator::projectiveStep(const SimState& s, double h, NodePass& pass, do
     for (std::size_t i = 0; i < n; ++i)
         m_held[i] = m_tmp[i] != Vec3::Ones();
     static const DeformationModel kNoTerms;
-    const auto* model = deformation ? &static_cast<DeformationEffect*>(deformation)->model() : &kNoTerms;
+    const DeformationModel* model = deformation ? &deformation->model() : &kNoTerms;
+    // The iterations evaluate the deformation's forces (timed as the deformation effect's).
     const ProjectiveDynamics::Forces forces = [&](std::span<Vec3> x, std::span<Vec3> f) {
         if (!deformation)
             return 0.0;
+        const auto t0 = Clock::now();
         SimState at = s;
         at.x = x;
-        return deformation->addForces(at, f);
+        const double energy = deformation->addForces(at, f);
+        m_effectMs[deformationIndex] += msSince(t0);
+        return energy;
     };
     if (Status st = m_projective->step(m_mesh, *model, m_held, m_force, h, m_options.projective,
                                        m_threads, m_backupX, m_backupV, forces);
