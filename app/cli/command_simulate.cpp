@@ -7,7 +7,11 @@
 //
 // Runs the tissue model (core/sim) for N steps and writes the deformed mesh and a report:
 //   {"steps", "requested_steps", "substeps", "dt", "stable_dt", "integrator", "threads", "time_s",
+//    "wall_s", "realtime_factor" (simulated s per wall s of the steps),
 //    "effects": [{"name", "time_ms"}, ...]   (only the effects run, in run order)
+//    implicit only: "iterations", "factorizations", "factor_ms" (the last assembly and
+//    factorisation), "halvings" (iterates pulled back because they raised the step's objective),
+//    "restarts" (steps started from x instead of x + h v: violent motion),
 //    "finite", "max_speed", "kinetic_energy": {"initial", "max", "final"}, "inverted",
 //    "error" (only when the simulation diverged),
 //    "resected": {"policy", "pieces", "volume", "mass", "mass_before", "mass_remaining"}}
@@ -266,6 +270,8 @@ int runSimulate(Args args) {
         report["iterations"] = sim.options().projective.iterations;
         report["factorizations"] = pd->factorizations;
         report["factor_ms"] = pd->factorMs;
+        report["halvings"] = static_cast<double>(pd->halvings);
+        report["restarts"] = static_cast<double>(pd->restarts);
     }
     QJsonArray effectTimes;
     for (const EffectTime& e : sim.totalTimes()) {

@@ -269,7 +269,7 @@ Status ProjectiveDynamics::step(TetMesh& mesh, const DeformationModel& model,
             const int i = d.freeNodes[r];
             stay += mass[i] / 2 * (v[i] + (h / mass[i]) * fext[i]).squaredNorm();
         }
-        if (g > stay) {
+        if (g > stay + 1e-12 * std::abs(stay)) { // (beyond rounding: with v = 0 both are the same point)
             for (int r = 0; r < rows; ++r)
                 x[d.freeNodes[r]] = d.x0[d.freeNodes[r]];
             g = evaluate();

@@ -156,6 +156,7 @@ private slots:
         QCOMPARE(rep["inverted"].toInt(), 0);
         QCOMPARE(rep["factorizations"].toInt(), 1);
         QCOMPARE(rep["iterations"].toInt(), 5);
+        QVERIFY(rep["halvings"].isDouble() && rep["restarts"].isDouble());
         QVERIFY(rep["realtime_factor"].toDouble() > 0);
         QVERIFY(rep["wall_s"].toDouble() > 0);
         QCOMPARE(effectNames(rep), (QStringList{"deformation", "gravity", "damping", "fixed"}));
