@@ -3,6 +3,9 @@
 #include "core/mesh/box_mesh.h"
 #include "core/mesh/masses.h"
 #include "core/mesh/material.h"
+#include "core/sweep/sweep_surface.h"
+
+#include <QtGlobal>
 
 #include <random>
 
@@ -33,6 +36,14 @@ inline void perturb(TetMesh& m, double amplitude, unsigned seed = 7) {
     std::uniform_real_distribution<double> u(-amplitude, amplitude);
     for (Vec3& p : m.positions())
         p += Vec3(u(rng), u(rng), u(rng));
+}
+
+/// The planar sweep from the segment (a0, a1) to the segment (b0, b1).
+inline SweepSurface quad(const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1) {
+    SweepSurface s;
+    if (const Status st = SweepSurface::fromStartEnd({a0, a1}, {b0, b1}, s); !st.ok())
+        qFatal("%s", st.message().c_str());
+    return s;
 }
 
 /// Tets with non-positive current volume.

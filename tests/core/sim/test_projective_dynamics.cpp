@@ -65,13 +65,6 @@ double tipSag(const TetMesh& m) {
     return sum / count;
 }
 
-SweepSurface quad(const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1) {
-    SweepSurface s;
-    if (const Status st = SweepSurface::fromStartEnd({a0, a1}, {b0, b1}, s); !st.ok())
-        qFatal("%s", st.message().c_str());
-    return s;
-}
-
 } // namespace
 
 class TestProjectiveDynamics : public QObject {

@@ -15,17 +15,10 @@
 
 using namespace resect;
 using resect::testing::countInvertedTets;
+using resect::testing::quad;
 using resect::testing::simBox;
 
 namespace {
-
-SweepSurface quad(const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1) {
-    SweepSurface s;
-    const Status st = SweepSurface::fromStartEnd({a0, a1}, {b0, b1}, s);
-    if (!st.ok())
-        qFatal("%s", st.message().c_str());
-    return s;
-}
 
 /// Sweeps of a scene: a complete, slightly tilted cut across the box, then a partial cut
 /// ending inside it that crosses the first, then a cut through existing node planes.
