@@ -14,13 +14,9 @@ namespace resect {
 namespace {
 
 Integrator integratorOf(const std::string& name) {
-    if (name == "implicit" || name == "projective-dynamics")
-        return Integrator::ProjectiveDynamics;
-    if (name == "velocity-verlet")
-        return Integrator::VelocityVerlet;
-    if (name == "backward-euler")
-        return Integrator::BackwardEuler;
-    return Integrator::SymplecticEuler;
+    Integrator integrator = Integrator::SymplecticEuler;  // (the loader accepts known names only)
+    parseIntegrator(name, integrator);
+    return integrator;
 }
 
 } // namespace

@@ -53,18 +53,13 @@
 namespace resect::cli {
 namespace {
 
-Integrator parseIntegrator(const std::string& text) {
-    if (text == "explicit" || text == "symplectic-euler")
-        return Integrator::SymplecticEuler;
-    if (text == "velocity-verlet" || text == "verlet")
-        return Integrator::VelocityVerlet;
-    if (text == "implicit" || text == "projective-dynamics")
-        return Integrator::ProjectiveDynamics;
-    if (text == "backward-euler")
-        return Integrator::BackwardEuler;
-    badInput("--integrator: expected explicit, implicit, symplectic-euler, velocity-verlet, "
-             "projective-dynamics or backward-euler, got '" +
-             text + "'");
+Integrator integratorOption(const std::string& text) {
+    Integrator integrator{};
+    if (!parseIntegrator(text, integrator))
+        badInput("--integrator: expected explicit, implicit, symplectic-euler, velocity-verlet, "
+                 "projective-dynamics or backward-euler, got '" +
+                 text + "'");
+    return integrator;
 }
 
 std::vector<Vec3> parseTool(const std::string& text) {
@@ -108,7 +103,7 @@ QJsonValue number(double v) {
 int runSimulate(Args args) {
     const int steps = args.integer("--steps", 1, 100000000).value_or(0);
     const auto dt = args.number("--dt", 0.0, 1e6);
-    const Integrator integrator = parseIntegrator(args.option("--integrator").value_or("explicit"));
+    const Integrator integrator = integratorOption(args.option("--integrator").value_or("explicit"));
     const std::string effectList = args.option("--effects").value_or("deformation");
     const auto box = args.numbers("--fix-box", 6, "x0 y0 z0 x1 y1 z1");
     const auto resectedText = args.option("--resected");

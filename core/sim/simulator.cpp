@@ -58,6 +58,20 @@ const char* integratorName(Integrator integrator) {
     return "?";
 }
 
+bool parseIntegrator(const std::string& name, Integrator& out) {
+    if (name == "symplectic-euler" || name == "explicit")
+        out = Integrator::SymplecticEuler;
+    else if (name == "velocity-verlet" || name == "verlet")
+        out = Integrator::VelocityVerlet;
+    else if (name == "projective-dynamics" || name == "implicit")
+        out = Integrator::ProjectiveDynamics;
+    else if (name == "backward-euler")
+        out = Integrator::BackwardEuler;
+    else
+        return false;
+    return true;
+}
+
 bool isExplicit(Integrator integrator) {
     return integrator != Integrator::BackwardEuler && integrator != Integrator::ProjectiveDynamics;
 }

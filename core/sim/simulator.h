@@ -80,6 +80,9 @@ enum class Integrator { SymplecticEuler, VelocityVerlet, BackwardEuler, Projecti
 
 /// "symplectic-euler", "velocity-verlet", "backward-euler", "projective-dynamics".
 const char* integratorName(Integrator integrator);
+/// The names above and the product's aliases: "implicit" (projective dynamics), "explicit"
+/// (symplectic Euler), "verlet". False for anything else.
+bool parseIntegrator(const std::string& name, Integrator& out);
 bool isExplicit(Integrator integrator);
 
 /// Stable stepping of the explicit integrators at the default step (see "Time step" above).
