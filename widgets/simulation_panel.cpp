@@ -152,7 +152,7 @@ void SimulationPanel::updateFigures() {
     m_cost->setText(parts.join(QLatin1Char('\n')));
     const SimulationSettings& settings = m_document.scenario().simulation;
     QString integrator = QString::fromStdString(settings.integrator);
-    if (settings.integrator == "implicit" || settings.integrator == "projective-dynamics")
+    if (Integrator kind{}; parseIntegrator(settings.integrator, kind) && kind == Integrator::ProjectiveDynamics)
         integrator = settings.iterations == 1 ? tr("implicit, 1 iteration a step")
                                               : tr("implicit, %1 iterations a step").arg(settings.iterations);
     const double ms = m_controller.msPerSimulatedSecond();
