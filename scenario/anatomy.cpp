@@ -25,7 +25,7 @@ Status loadAnatomy(const std::string& source, TriangleSurface& out) {
 }
 
 Status meshAnatomy(TriangleSurface& surface, const AnatomyMeshing& options, TetMesh& out,
-                   std::string* log) {
+                   std::string* log, MeshingReport* report) {
     SurfaceCheck check = checkSurface(surface);
     Status problem = surfaceProblem(check);
     if (!problem.ok() && options.repair && check.borderEdges > 0 && check.nonFiniteVertices == 0 &&
@@ -42,7 +42,7 @@ Status meshAnatomy(TriangleSurface& surface, const AnatomyMeshing& options, TetM
         return problem;
     orientOutward(surface);
     TetMesh mesh;
-    if (Status s = tetrahedralize(surface, options.meshing, mesh); !s.ok())
+    if (Status s = tetrahedralize(surface, options.meshing, mesh, report); !s.ok())
         return s;
     computeLumpedMasses(mesh, options.material.density);
     out = std::move(mesh);

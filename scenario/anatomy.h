@@ -25,8 +25,9 @@ Status loadAnatomy(const std::string& source, TriangleSurface& out);
 
 /// Checks (and with `repair`, closes) the surface, orients it outward in place, meshes it and
 /// sets masses from the material density (Eq. 3). `log` receives notes such as
-/// "filled 2 holes". Errors are one sentence naming the problem.
+/// "filled 2 holes". Errors are one sentence naming the problem. `report` (optional)
+/// receives what the mesher found and did (tetrahedralize.h).
 Status meshAnatomy(TriangleSurface& surface, const AnatomyMeshing& options, TetMesh& out,
-                   std::string* log = nullptr);
+                   std::string* log = nullptr, MeshingReport* report = nullptr);
 
 } // namespace resect

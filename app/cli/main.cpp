@@ -15,8 +15,15 @@ const char* kUsage = R"(usage: resect COMMAND [options]
 commands:
   info MESH                         JSON summary of a tet mesh (.vtu, .msh, .node/.ele)
   mesh (SURFACE | --sample NAME) --out OUT.vtu [--edge-length L] [--repair] [--seed N]
+      [--min-dihedral 10] [--protect-features [--feature-angle 60]] [--no-volume-match]
+      [--report R.json]
                                     tetrahedralize a closed surface (any format assimp
-                                    reads) or a built-in sample (polyp, myoma)
+                                    reads) or a built-in sample (polyp, myoma) into a
+                                    coarse mesh (default edge length: a few hundred to a
+                                    few thousand tets); re-meshed with the next seed until
+                                    every dihedral angle is >= --min-dihedral; boundary
+                                    nodes moved so the volume is the surface's; sharp
+                                    edges kept only with --protect-features (CAD input)
   demo [--out DIR] [--sample NAME]  headless demo: mesh a sample, print its quality,
                                     write the mesh, surface and summary to DIR
   cut MESH --sweep S.json [--sweep S2.json ...] --out OUT.vtu [--report R.json]

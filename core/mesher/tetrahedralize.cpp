@@ -2,12 +2,16 @@
 // in this translation unit (it takes about 90 s and 3.5 GB to compile at -O2).
 //
 // Pipeline: checkSurface -> CGAL Surface_mesh -> Polyhedral_mesh_domain_with_features_3
-// (sharp edges protected) -> make_mesh_3 (Delaunay refinement) -> perturb_mesh_3 and
-// exude_mesh_3 (sliver removal) -> cells of the complex -> TetMesh.
+// (sharp edges protected only when asked) -> make_mesh_3 (Delaunay refinement) ->
+// perturb_mesh_3 and exude_mesh_3 (sliver removal) -> cells of the complex -> TetMesh ->
+// volume matching (match_volume.h) -> quality check, re-meshed with the next seed if low.
 
 #include "core/mesher/tetrahedralize.h"
 
+#include "core/cut/improve_mesh.h"
+#include "core/mesh/quality.h"
 #include "core/mesher/check_surface.h"
+#include "core/mesher/match_volume.h"
 
 // Boost.Graph, used by CGAL's feature detection, trips a false positive of GCC's
 // -Wmaybe-uninitialized (boost::add_edge); silence only that one, only here.
@@ -29,7 +33,10 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
+#include <iterator>
+#include <numbers>
 #include <exception>
 #include <map>
 #include <sstream>
@@ -48,11 +55,6 @@ using Triangulation = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Se
 using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Triangulation, Domain::Corner_index,
                                                      Domain::Curve_index>;
 using Criteria = CGAL::Mesh_criteria_3<Triangulation>;
-
-/// Surface edges whose two triangles' normals differ by more than this are protected as
-/// sharp features (box edges stay sharp; the samples have none at detail 1, where their
-/// largest normal difference is about 40 degrees).
-constexpr double kFeatureAngleDeg = 60.0;
 
 /// Facet angle bound (degrees) of CGAL's surface criteria; 25 is CGAL's usual choice and
 /// below the 30 degrees for which refinement is proven to terminate.
@@ -79,6 +81,90 @@ constexpr int kRetryInitialPoints = 64;
 /// would the result depend on timing and no longer be reproducible from the seed.
 constexpr double kPerturbTimeLimitSeconds = 20.0;
 constexpr double kExudeTimeLimitSeconds = 20.0;
+
+/// Largest accepted --min-dihedral: a regular tet's dihedral angle is 70.5 degrees, and
+/// no mesher gets anywhere near that bound everywhere.
+constexpr double kMaxMinDihedralDeg = 35.0;
+
+/// Volume matching may lower a tet's smallest dihedral angle only down to the enforced
+/// bound plus this margin (so that it does not spend the quality the perturbation won:
+/// without the margin the femur's worst angle fell from 12.0 to 10.9 degrees).
+constexpr double kVolumeMatchMarginDeg = 2.0;
+
+/// Edges shorter than this fraction of h are collapsed after refinement. Mesh_3 without
+/// feature protection refines a sharp crease of the surface into a cluster of tiny (well
+/// shaped) tets: on the corpus femur, edges of 1 % of h, a stable explicit step 30 times
+/// shorter, and an edge length that no longer sets the size.
+constexpr double kShortEdgeFraction = 0.25;
+
+/// Collapses the edges shorter than kShortEdgeFraction h (improve_mesh.h: the boundary
+/// stays on the surface and the volume is kept exactly; no tet falls below
+/// min(kCollapseRatioFloor, its radius ratio before)). Returns the edges collapsed.
+constexpr double kCollapseRatioFloor = 0.15;
+/// The collapses are kept if the worst dihedral angle stays this far above the bound (or
+/// does not get worse).
+constexpr double kCollapseMarginDeg = 0.5;
+int collapseShortEdges(TetMesh& mesh, double h) {
+    const double shortEdge = kShortEdgeFraction * h;
+    std::vector<int> seeds;
+    for (int t = 0; t < mesh.tetCount(); ++t) {
+        const Tet& k = mesh.tet(t);
+        for (int i = 0; i < 4; ++i)
+            for (int j = i + 1; j < 4; ++j)
+                if ((mesh.ref(k[i]) - mesh.ref(k[j])).norm() < shortEdge) {
+                    seeds.push_back(k[i]);
+                    seeds.push_back(k[j]);
+                }
+    }
+    if (seeds.empty())
+        return 0;
+    std::sort(seeds.begin(), seeds.end());
+    seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+    ImproveOptions o;
+    o.shortEdge = shortEdge;
+    o.badRatio = kCollapseRatioFloor;
+    o.rings = 2;
+    o.sweeps = 4;
+    o.offSurface = false;
+    const ImproveRegion region = improveRegion(mesh, seeds, {}, o.rings);
+    const ImproveResult r = improveMesh(mesh, region, o);
+    for (double& m : mesh.masses())
+        m = 0.0; // the pass set masses of what it touched; the mesher's contract is 0
+    return r.collapses;
+}
+
+/// See defaultEdgeLength.
+constexpr double kEdgesPerThickness = 2.25;
+
+/// Smallest dihedral angle over the mesh, in degrees.
+double minDihedralDegrees(const TetMesh& mesh) {
+    double worst = 180.0;
+    for (int t = 0; t < mesh.tetCount(); ++t) {
+        const Tet& k = mesh.tet(t);
+        worst = std::min(worst, tetQuality(mesh.ref(k[0]), mesh.ref(k[1]), mesh.ref(k[2]), mesh.ref(k[3])).minDihedral);
+    }
+    return worst * 180.0 / std::numbers::pi;
+}
+
+/// Surface edges whose two triangles' normals differ by more than angleDeg (what CGAL's
+/// detect_features marks as sharp).
+int countSharpEdges(const TriangleSurface& s, double angleDeg) {
+    std::map<std::pair<int, int>, Vec3> firstNormal;
+    const double cosLimit = std::cos(angleDeg * std::numbers::pi / 180.0);
+    int sharp = 0;
+    for (const Tri& t : s.triangles) {
+        const Vec3& a = s.positions[t[0]];
+        const Vec3 n = (s.positions[t[1]] - a).cross(s.positions[t[2]] - a).normalized();
+        for (int i = 0; i < 3; ++i) {
+            const int u = t[i], v = t[(i + 1) % 3];
+            const auto key = std::minmax(u, v);
+            const auto [it, inserted] = firstNormal.try_emplace({key.first, key.second}, n);
+            if (!inserted && it->second.dot(n) < cosLimit)
+                ++sharp;
+        }
+    }
+    return sharp;
+}
 
 bool cancelled(const MeshingOptions& o) {
     return o.cancel != nullptr && o.cancel->load(std::memory_order_relaxed);
@@ -169,13 +255,48 @@ double defaultEdgeLength(const TriangleSurface& surface) {
     double h = std::cbrt(extent.x() * extent.y() * extent.z()) / 7.5;
     if (smallest > 0.0)
         h = std::min(h, smallest / 2.5);
+    // A body thin for its box (a bent shaft, a stalk) gets at least about three edges
+    // across: its mean thickness 3 V / A (a sphere's radius; 0.75 of a cylinder's
+    // diameter) spans kEdgesPerThickness edges. Coarser, its mesh is all boundary, and
+    // half the edge length gives only 3-4 times the tets (the corpus femur). The samples
+    // have 2.4 (polyp) and 3.7 (myoma) edges in theirs, so the cap leaves them alone.
+    double area = 0.0;
+    for (const Tri& t : surface.triangles) {
+        const Vec3& a = surface.positions[t[0]];
+        area += 0.5 * (surface.positions[t[1]] - a).cross(surface.positions[t[2]] - a).norm();
+    }
+    const double thickness = 3.0 * std::abs(enclosedVolume(surface)) / area;
+    if (std::isfinite(thickness) && thickness > 0.0)
+        h = std::min(h, thickness / kEdgesPerThickness);
     if (!(h > 0.0))
         h = longest / 20.0;
     return h;
 }
 
-Status tetrahedralize(const TriangleSurface& surface, const MeshingOptions& options, TetMesh& out) {
+Status tetrahedralize(const TriangleSurface& surface, const MeshingOptions& options, TetMesh& out,
+                      MeshingReport* report) {
+    const auto started = std::chrono::steady_clock::now();
     out = TetMesh();
+    MeshingReport local;
+    MeshingReport& rep = report != nullptr ? *report : local;
+    rep = MeshingReport();
+
+    const int attempts = std::max(1, options.attempts);
+    // Typical shares of an attempt's time (refinement, perturbation, exudation, volume
+    // matching, quality check), measured on the samples and CGAL's scanned surfaces.
+    constexpr std::array<double, 5> kShare{0.25, 0.6, 0.07, 0.05, 0.03};
+    const auto announce = [&](MeshingStage stage, int attempt) {
+        if (!options.progress)
+            return;
+        double done = 0.0;
+        if (stage != MeshingStage::CheckingSurface)
+            for (int i = 0; i < static_cast<int>(stage) - 1; ++i)
+                done += kShare[static_cast<std::size_t>(i)];
+        // Each attempt is shown as the whole work: a retry starts again from 0.
+        options.progress(MeshingProgress{stage, attempt + 1, attempts, std::min(done, 1.0)});
+    };
+    announce(MeshingStage::CheckingSurface, 0);
+
     const SurfaceCheck check = checkSurface(surface);
     if (Status problem = surfaceProblem(check); !problem)
         return problem;
@@ -203,6 +324,16 @@ Status tetrahedralize(const TriangleSurface& surface, const MeshingOptions& opti
     if (!std::isfinite(radiusEdge) || radiusEdge < 2.0)
         return Status::error("cell radius-edge ratio must be at least 2, got " +
                              formatNumber(radiusEdge));
+    const double minDihedral = options.minDihedralDeg;
+    if (!std::isfinite(minDihedral) || minDihedral < 0.0 || minDihedral > kMaxMinDihedralDeg)
+        return Status::error("--min-dihedral must be between 0 and " + formatNumber(kMaxMinDihedralDeg) +
+                             " degrees, got " + formatNumber(minDihedral));
+    const double featureAngle = options.featureAngleDeg;
+    if (options.protectFeatures && !(featureAngle > 0.0 && featureAngle < 180.0))
+        return Status::error("--feature-angle must be between 0 and 180 degrees, got " +
+                             formatNumber(featureAngle));
+    rep.edgeLength = h;
+    rep.surfaceVolume = std::abs(check.enclosedVolume);
 
     if (cancelled(options))
         return cancelledStatus();
@@ -222,61 +353,132 @@ Status tetrahedralize(const TriangleSurface& surface, const MeshingOptions& opti
         // loads the flag, so the const_cast never leads to a write.
         auto* stop = const_cast<std::atomic<bool>*>(options.cancel);
 
-        C3t3 c3t3;
-        for (const int initialPoints : {kInitialPoints, kRetryInitialPoints}) {
+        TetMesh best;
+        MeshingReport bestReport = rep;
+        int made = 0;
+        for (int attempt = 0; attempt < attempts; ++attempt) {
+            made = attempt + 1;
+            const unsigned seed = options.seed + static_cast<unsigned>(attempt);
+            announce(MeshingStage::Refining, attempt);
             // Reproducibility: the domain's initial rays and the refinement and
             // optimisation passes draw from these generators only.
-            CGAL::get_default_random() = CGAL::Random(options.seed);
-            CGAL::Random domainRandom(options.seed);
+            CGAL::Random domainRandom(seed);
             Domain domain(mesh, &domainRandom);
-            domain.detect_features(kFeatureAngleDeg);
+            int featureEdges = 0;
+            if (options.protectFeatures) {
+                domain.detect_features(featureAngle);
+                featureEdges = countSharpEdges(surface, featureAngle);
+            }
 
-            CGAL::Mesh_error_code error = CGAL::CGAL_MESH_3_NO_ERROR;
-            c3t3 = CGAL::make_mesh_3<C3t3>(
-                domain, criteria, p::no_perturb(), p::no_exude(),
-                p::mesh_3_options(p::number_of_initial_points = initialPoints,
-                                  p::maximal_number_of_vertices = kMaxVertices,
-                                  p::pointer_to_error_code = &error,
-                                  p::pointer_to_stop_atomic_boolean = stop));
-            if (cancelled(options) || error == CGAL::CGAL_MESH_3_STOPPED)
-                return cancelledStatus();
-            if (error == CGAL::CGAL_MESH_3_MAXIMAL_NUMBER_OF_VERTICES_REACHED)
-                return Status::error("--edge-length " + formatNumber(h) +
-                                     " is too small for this surface: meshing stopped at " +
-                                     std::to_string(kMaxVertices) + " vertices");
+            C3t3 c3t3;
+            for (const int initialPoints : {kInitialPoints, kRetryInitialPoints}) {
+                CGAL::get_default_random() = CGAL::Random(seed);
+                CGAL::Mesh_error_code error = CGAL::CGAL_MESH_3_NO_ERROR;
+                c3t3 = CGAL::make_mesh_3<C3t3>(
+                    domain, criteria, p::no_perturb(), p::no_exude(),
+                    p::mesh_3_options(p::number_of_initial_points = initialPoints,
+                                      p::maximal_number_of_vertices = kMaxVertices,
+                                      p::pointer_to_error_code = &error,
+                                      p::pointer_to_stop_atomic_boolean = stop));
+                if (cancelled(options) || error == CGAL::CGAL_MESH_3_STOPPED)
+                    return cancelledStatus();
+                if (error == CGAL::CGAL_MESH_3_MAXIMAL_NUMBER_OF_VERTICES_REACHED)
+                    return Status::error("--edge-length " + formatNumber(h) +
+                                         " is too small for this surface: meshing stopped at " +
+                                         std::to_string(kMaxVertices) + " vertices");
+                if (c3t3.number_of_cells_in_complex() != 0)
+                    break; // else no restricted facet was found from the initial points: retry
+            }
             if (c3t3.number_of_cells_in_complex() == 0)
-                continue; // no restricted facet found from the initial points: retry
+                continue;
 
             // Sliver removal: perturbation moves vertices to raise the smallest dihedral
             // angles, exudation re-weights vertices so that slivers flip away (Cheng et
             // al., "Sliver exudation", 2000). Measured on the samples, the minimum radius
             // ratio rises from about 0.01-0.04 to 0.15-0.3 for 0.1-1 s.
+            announce(MeshingStage::Perturbing, attempt);
             CGAL::perturb_mesh_3(c3t3, domain, p::time_limit = kPerturbTimeLimitSeconds);
             if (cancelled(options))
                 return cancelledStatus();
+            announce(MeshingStage::Exuding, attempt);
             CGAL::exude_mesh_3(c3t3, p::time_limit = kExudeTimeLimitSeconds);
             if (cancelled(options))
                 return cancelledStatus();
-            break;
-        }
 
-        TetMesh result = extractTets(c3t3);
-        if (result.empty())
+            TetMesh result = extractTets(c3t3);
+            if (result.empty())
+                continue;
+            // Collapsing short edges keeps radius ratios, not dihedral angles: where it would
+            // lower the worst angle below the bound (plus a margin), the refined mesh is kept
+            // as it was.
+            int collapsed = 0;
+            {
+                TetMesh collapsedMesh = result;
+                if (const int n = collapseShortEdges(collapsedMesh, h); n > 0) {
+                    const double after = minDihedralDegrees(collapsedMesh);
+                    if (after >= std::min(minDihedralDegrees(result), minDihedral + kCollapseMarginDeg)) {
+                        result = std::move(collapsedMesh);
+                        collapsed = n;
+                    }
+                }
+            }
+            MeshingReport r = rep;
+            r.seed = seed;
+            r.attempts = attempt + 1;
+            r.featureEdges = featureEdges;
+            r.collapsedEdges = collapsed;
+            r.inscribedVolume = result.totalReferenceVolume();
+            r.volume = r.inscribedVolume;
+            if (options.matchVolume) {
+                announce(MeshingStage::MatchingVolume, attempt);
+                const auto& tree = domain.aabb_tree();
+                const auto closest = [&tree](const Vec3& q) {
+                    const Point c = tree.closest_point(Point(q.x(), q.y(), q.z()));
+                    return Vec3(c.x(), c.y(), c.z());
+                };
+                const VolumeMatchResult matched = matchVolume(result, rep.surfaceVolume, closest,
+                                                                minDihedral + kVolumeMatchMarginDeg);
+                r.volume = matched.volumeAfter;
+                r.maxBoundaryOffset = matched.maxOffset;
+                r.restrainedNodes = matched.restrainedNodes;
+            }
+            announce(MeshingStage::CheckingQuality, attempt);
+            r.minDihedralDeg = minDihedralDegrees(result);
+            const bool better = best.empty() || r.minDihedralDeg > bestReport.minDihedralDeg;
+            if (better) {
+                best = std::move(result);
+                bestReport = r;
+            }
+            if (bestReport.minDihedralDeg >= minDihedral)
+                break;
+            if (cancelled(options))
+                return cancelledStatus();
+        }
+        rep = bestReport;
+        rep.attempts = made;
+        rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+
+        if (best.empty())
             return Status::error("meshing produced no tets; --edge-length " + formatNumber(h) +
                                  " is probably too large for this surface");
+        if (rep.minDihedralDeg < minDihedral)
+            return Status::error(
+                "no mesh reached the smallest dihedral angle of " + formatNumber(minDihedral) +
+                " degrees in " + std::to_string(attempts) + " attempts (seeds " +
+                std::to_string(options.seed) + " to " + std::to_string(options.seed + attempts - 1) +
+                "; the best had " + formatNumber(std::round(rep.minDihedralDeg * 100.0) / 100.0) +
+                " degrees); try another --edge-length or --seed, or lower --min-dihedral");
         // The surface may be inside out (negative volume); the mesh is not.
-        const double volume = result.totalReferenceVolume();
-        const double surfaceVolume = std::abs(check.enclosedVolume);
-        const double relativeError = std::abs(volume - surfaceVolume) / surfaceVolume;
+        const double relativeError = std::abs(rep.volumeError());
         if (!(relativeError <= options.maxVolumeError))
-            return Status::error("the tet mesh volume " + formatNumber(volume) +
+            return Status::error("the tet mesh volume " + formatNumber(rep.volume) +
                                  " differs from the surface's enclosed volume " +
-                                 formatNumber(surfaceVolume) + " by " +
+                                 formatNumber(rep.surfaceVolume) + " by " +
                                  formatNumber(std::round(relativeError * 1000.0) / 10.0) +
                                  " %; try a smaller --edge-length than " + formatNumber(h));
         if (cancelled(options))
             return cancelledStatus();
-        out = std::move(result);
+        out = std::move(best);
         return Status::success();
     } catch (const std::exception& e) {
         return Status::error(std::string("meshing failed: ") + e.what());

