@@ -10,14 +10,16 @@
 #include <QJsonObject>
 
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 namespace resect::cli {
 
 namespace {
 
-QJsonObject meshingReportJson(const MeshingReport& r, const QualitySummary& q) {
+QJsonObject meshingReportJson(const MeshingReport& r, const QualitySummary& q, std::size_t triangles) {
     QJsonObject o;
+    o["surface_triangles"] = static_cast<double>(triangles);
     o["nodes"] = q.nodes;
     o["tets"] = q.tets;
     o["edge_length"] = r.edgeLength;
@@ -35,6 +37,7 @@ QJsonObject meshingReportJson(const MeshingReport& r, const QualitySummary& q) {
     o["max_boundary_offset"] = r.maxBoundaryOffset;
     o["restrained_nodes"] = r.restrainedNodes;
     o["feature_edges"] = r.featureEdges;
+    o["collapsed_edges"] = r.collapsedEdges;
     o["seconds"] = r.seconds;
     return o;
 }
@@ -75,7 +78,9 @@ int runMesh(Args args) {
     if (!sample)
         requireDistinct(files[0], out);
     if (reportPath) {
-        requireDistinct(out, *reportPath);
+        std::error_code ec;
+        if (std::filesystem::weakly_canonical(out, ec) == std::filesystem::weakly_canonical(*reportPath, ec))
+            badInput("--report " + *reportPath + " is the --out file; give them different names");
         if (!sample)
             requireDistinct(files[0], *reportPath);
     }
@@ -107,7 +112,7 @@ int runMesh(Args args) {
     if (options.meshing.protectFeatures)
         std::printf("  %d sharp surface edges protected\n", report.featureEdges);
     if (reportPath)
-        requireOk(writeJson(*reportPath, meshingReportJson(report, q)));
+        requireOk(writeJson(*reportPath, meshingReportJson(report, q, surface.triangles.size())));
     return kOk;
 }
 

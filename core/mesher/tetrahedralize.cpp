@@ -332,6 +332,10 @@ Status tetrahedralize(const TriangleSurface& surface, const MeshingOptions& opti
     if (options.protectFeatures && !(featureAngle > 0.0 && featureAngle < 180.0))
         return Status::error("--feature-angle must be between 0 and 180 degrees, got " +
                              formatNumber(featureAngle));
+    // The angle the post-passes (collapses, volume matching) protect: the bound, and never
+    // less than the default one, so that a lower --min-dihedral accepts worse meshes from
+    // CGAL but does not let the passes make them worse.
+    const double guardDeg = std::max(minDihedral, MeshingOptions{}.minDihedralDeg);
     rep.edgeLength = h;
     rep.surfaceVolume = std::abs(check.enclosedVolume);
 
@@ -416,7 +420,7 @@ Status tetrahedralize(const TriangleSurface& surface, const MeshingOptions& opti
                 TetMesh collapsedMesh = result;
                 if (const int n = collapseShortEdges(collapsedMesh, h); n > 0) {
                     const double after = minDihedralDegrees(collapsedMesh);
-                    if (after >= std::min(minDihedralDegrees(result), minDihedral + kCollapseMarginDeg)) {
+                    if (after >= std::min(minDihedralDegrees(result), guardDeg + kCollapseMarginDeg)) {
                         result = std::move(collapsedMesh);
                         collapsed = n;
                     }
@@ -437,7 +441,7 @@ Status tetrahedralize(const TriangleSurface& surface, const MeshingOptions& opti
                     return Vec3(c.x(), c.y(), c.z());
                 };
                 const VolumeMatchResult matched = matchVolume(result, rep.surfaceVolume, closest,
-                                                                minDihedral + kVolumeMatchMarginDeg);
+                                                                guardDeg + kVolumeMatchMarginDeg);
                 r.volume = matched.volumeAfter;
                 r.maxBoundaryOffset = matched.maxOffset;
                 r.restrainedNodes = matched.restrainedNodes;

@@ -63,6 +63,11 @@ private slots:
         QTest::newRow("edge length zero") << QStringList{"mesh", "--sample", "polyp", "--out", "x.vtu", "--edge-length", "0"} << "--edge-length";
         QTest::newRow("edge length nan") << QStringList{"mesh", "--sample", "polyp", "--out", "x.vtu", "--edge-length", "nan"} << "--edge-length";
         QTest::newRow("edge length absurdly small") << QStringList{"mesh", "--sample", "polyp", "--out", "x.vtu", "--edge-length", "1e-9"} << "edge";
+        QTest::newRow("min dihedral too high") << QStringList{"mesh", "--sample", "polyp", "--out", "x.vtu", "--min-dihedral", "40"} << "--min-dihedral must be between 0 and 35";
+        QTest::newRow("min dihedral text") << QStringList{"mesh", "--sample", "polyp", "--out", "x.vtu", "--min-dihedral", "ten"} << "--min-dihedral";
+        QTest::newRow("feature angle alone") << QStringList{"mesh", "--sample", "polyp", "--out", "x.vtu", "--feature-angle", "30"} << "--feature-angle needs --protect-features";
+        QTest::newRow("feature angle zero") << QStringList{"mesh", "--sample", "polyp", "--out", "x.vtu", "--protect-features", "--feature-angle", "0"} << "--feature-angle must be between 0 and 180";
+        QTest::newRow("report is the output") << QStringList{"mesh", "--sample", "polyp", "--out", "x.vtu", "--report", "x.vtu"} << "x.vtu";
         QTest::newRow("mesh missing file") << QStringList{"mesh", "/nonexistent/s.obj", "--out", "x.vtu"} << "/nonexistent/s.obj";
     }
     void usageErrors() {
@@ -128,6 +133,40 @@ private slots:
         QVERIFY(o["tets"].toInt() >= 100 && o["tets"].toInt() <= 5000);
         QCOMPARE(o["pieces"].toInt(), 1);
         QVERIFY(o["min_radius_ratio"].toDouble() > 0.05);
+    }
+
+    void meshReportsWhatItDid() {
+        // Issue 18: the report names the edge length, the attempts, the worst angle and the
+        // volumes; the volume is matched to the surface's, the angle is at least the bound.
+        const QString out = path("polyp-report.vtu"), report = path("polyp-report.json");
+        const Run r = runCli({"mesh", "--sample", "polyp", "--out", out, "--report", report});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains("worst dihedral") && r.out.contains("volume matched"), qPrintable(r.out));
+        QFile f(report);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QJsonObject o = QJsonDocument::fromJson(f.readAll()).object();
+        for (const char* key : {"tets", "edge_length", "attempts", "min_dihedral_deg", "surface_volume", "inscribed_volume",
+                                "volume", "volume_error", "max_boundary_offset", "seconds", "surface_triangles"})
+            QVERIFY2(o.contains(key), key);
+        QVERIFY(o["min_dihedral_deg"].toDouble() >= 10.0);
+        QVERIFY(std::abs(o["volume_error"].toDouble()) < 1e-9);
+        QVERIFY(o["inscribed_volume"].toDouble() < 0.99 * o["surface_volume"].toDouble());
+        QCOMPARE(o["attempts"].toInt(), 1);
+        TetMesh m;
+        QVERIFY(readTetMesh(out.toStdString(), m).ok());
+        QCOMPARE(m.tetCount(), o["tets"].toInt());
+        QVERIFY(std::abs(m.totalReferenceVolume() - o["surface_volume"].toDouble()) <= 1e-9 * o["surface_volume"].toDouble());
+        // Without matching, the inscribed volume.
+        const Run plain = runCli({"mesh", "--sample", "polyp", "--out", out, "--no-volume-match"});
+        QVERIFY2(plain.code == 0, qPrintable(plain.err));
+        QVERIFY(readTetMesh(out.toStdString(), m).ok());
+        QVERIFY(std::abs(m.totalReferenceVolume() - o["inscribed_volume"].toDouble()) <= 1e-9 * o["surface_volume"].toDouble());
+        // An unreachable bound fails with the best angle named, and writes nothing.
+        const QString never = path("never.vtu");
+        const Run strict = runCli({"mesh", "--sample", "polyp", "--out", never, "--min-dihedral", "30"});
+        QCOMPARE(strict.code, 2);
+        QVERIFY2(strict.err.contains("no mesh reached the smallest dihedral angle of 30 degrees"), qPrintable(strict.err));
+        QVERIFY(!QFile::exists(never));
     }
 
     void meshSurfaceFileKeepsInputIntact() {

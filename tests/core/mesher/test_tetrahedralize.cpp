@@ -85,6 +85,7 @@ private slots:
     void featuresAreProtectedOnlyWhenAsked();
     void volumeMatchingMovesBoundaryNodesALittle();
     void progressNamesEveryStage();
+    void lowerBoundDoesNotLoosenThePasses();
 };
 
 void TestTetrahedralize::meshesShapes_data() {
@@ -560,6 +561,24 @@ void TestTetrahedralize::progressNamesEveryStage() {
             QVERIFY(seen[i].fraction >= seen[i - 1].fraction);
     }
     QVERIFY(seen.back().fraction > 0.5);
+}
+
+void TestTetrahedralize::lowerBoundDoesNotLoosenThePasses() {
+    // --min-dihedral 0 accepts any mesh from CGAL, but the collapse and volume-matching
+    // passes still protect the default bound: where the default's first attempt passes, the
+    // two meshes are the same.
+    const TriangleSurface surface = surfaceByName("torus");
+    MeshingOptions any;
+    any.minDihedralDeg = 0;
+    TetMesh a, b;
+    MeshingReport ra, rb;
+    QVERIFY(tetrahedralize(surface, MeshingOptions{}, a, &ra).ok());
+    QVERIFY(tetrahedralize(surface, any, b, &rb).ok());
+    QCOMPARE(ra.attempts, 1);
+    QCOMPARE(b.tetCount(), a.tetCount());
+    for (int n = 0; n < a.nodeCount(); ++n)
+        QCOMPARE(b.ref(n), a.ref(n));
+    QCOMPARE(rb.minDihedralDeg, ra.minDihedralDeg);
 }
 
 QTEST_GUILESS_MAIN(TestTetrahedralize)
