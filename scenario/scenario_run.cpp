@@ -25,8 +25,9 @@ bool ScenarioRun::allPassed() const {
     return std::all_of(expectations.begin(), expectations.end(), [](const ExpectationResult& e) { return e.passed; });
 }
 
-Status loadTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh& mesh, TriangleSurface& surface,
-                  const std::atomic<bool>* cancel) {
+Status loadTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh& mesh,
+                  TriangleSurface& surface, const std::atomic<bool>* cancel,
+                  std::function<void(const MeshingProgress&)> progress) {
     const std::string where = "tissue '" + tissue.name + "'";
     const Material material = tissue.material.toMaterial();
     TriangleSurface loaded;
@@ -48,6 +49,7 @@ Status loadTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh& m
         meshing.meshing.edgeLength = tissue.meshing.edgeLength;
         meshing.meshing.seed = tissue.meshing.seed;
         meshing.meshing.cancel = cancel;
+        meshing.meshing.progress = std::move(progress);
         meshing.material = material;
         if (Status s = meshAnatomy(loaded, meshing, meshed); !s.ok())
             return Status::error(where + ": " + s.message());

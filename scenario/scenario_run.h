@@ -3,13 +3,14 @@
 // surface bound, every stroke and sweep replayed on it (scenario/replay.h) with the declared
 // effects and simulation settings, and the expectations evaluated per tissue.
 
+#include "core/mesher/tetrahedralize.h"
 #include "scenario/replay.h"
 #include "scenario/scenario_document.h"
 
 #include <QJsonObject>
 
 #include <atomic>
-
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -40,9 +41,12 @@ struct ScenarioRun {
 Status planTissue(const Scenario& scenario, const TissueSpec& tissue, ReplayPlan& plan);
 /// The first half of planTissue: loads the tissue's surface (if any) and its tet mesh, read
 /// or meshed (masses from its material). Meshing stops with an error when *cancel turns
-/// true. On failure the outputs are unchanged.
-Status loadTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh& mesh, TriangleSurface& surface,
-                  const std::atomic<bool>* cancel = nullptr);
+/// true; `progress` (optional) is called on the calling thread as each meshing stage starts
+/// (MeshingOptions::progress; not called for a tissue read from a tet mesh). On failure the
+/// outputs are unchanged.
+Status loadTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh& mesh,
+                  TriangleSurface& surface, const std::atomic<bool>* cancel = nullptr,
+                  std::function<void(const MeshingProgress&)> progress = {});
 /// The second half: the plan for an already loaded tissue (the studio plans on the mesh it
 /// has cut; fixed nodes are those of `mesh` inside the fixed regions).
 Status planLoadedTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh mesh, TriangleSurface surface,

@@ -777,7 +777,7 @@
 <context>
     <name>resect::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+287"/>
+        <location filename="../app/studio/main_window.cpp" line="+291"/>
         <location line="+11"/>
         <location line="+153"/>
         <location line="+57"/>
@@ -1077,12 +1077,18 @@
         <translation>Gewebe wird geladen und vernetzt...</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+10"/>
+        <location line="+6"/>
+        <source>Cancelling...</source>
+        <translation>Wird abgebrochen...</translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>The language changes when Resect Studio is started again.</source>
         <translation>Die Sprache ändert sich beim nächsten Start von Resect Studio.</translation>
     </message>
     <message>
-        <location line="-42"/>
+        <location line="-60"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -1748,12 +1754,12 @@
     </message>
     <message>
         <location line="+66"/>
-        <location line="+268"/>
+        <location line="+320"/>
         <source>Opening was cancelled.</source>
         <translation>Das Öffnen wurde abgebrochen.</translation>
     </message>
     <message>
-        <location line="-182"/>
+        <location line="-227"/>
         <source>Internal error: %1</source>
         <translation>Interner Fehler: %1</translation>
     </message>
@@ -1763,7 +1769,7 @@
         <translation>Interner Fehler</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>the scenario has no tissue</source>
         <translation>das Szenario hat kein Gewebe</translation>
     </message>
@@ -1771,6 +1777,41 @@
         <location line="+65"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+110"/>
+        <source>Checking the surface</source>
+        <translation>Oberfläche wird geprüft</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Meshing (Delaunay refinement)</source>
+        <translation>Vernetzung (Delaunay-Verfeinerung)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Removing slivers (perturbation)</source>
+        <translation>Slivers werden entfernt (Perturbation)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Removing slivers (exudation)</source>
+        <translation>Slivers werden entfernt (Exsudation)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Matching the volume</source>
+        <translation>Volumen wird angeglichen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Checking element quality</source>
+        <translation>Elementqualität wird geprüft</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 — attempt %2 of %3</source>
+        <translation>%1 — Versuch %2 von %3</translation>
     </message>
 </context>
 <context>

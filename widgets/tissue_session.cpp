@@ -254,9 +254,16 @@ void TissueSession::startNext() {
     m_cancel = false;
     m_worker = std::thread([this, request = std::move(request), base = std::move(base),
                             current = std::move(current)]() mutable {
+        // Progress goes to this thread, as the result does (finish()), and is judged there.
+        const auto progress = [this, generation = request.generation,
+                               trial = request.trial](const MeshingProgress& p) {
+            QMetaObject::invokeMethod(
+                this, [this, generation, trial, p] { reportProgress(generation, trial, p); },
+                Qt::QueuedConnection);
+        };
         Result result;
         try {
-            result = compute(request, std::move(base), std::move(current), m_cancel);
+            result = compute(request, std::move(base), std::move(current), m_cancel, progress);
         } catch (const std::exception& e) {
             result.error = tr("Internal error: %1").arg(QString::fromUtf8(e.what()));
         } catch (...) {
@@ -272,9 +279,10 @@ void TissueSession::startNext() {
     emit busyChanged(true);
 }
 
-TissueSession::Result TissueSession::compute(const Request& request, std::shared_ptr<const TissueState> base,
-                                             std::shared_ptr<const TissueState> current,
-                                             const std::atomic<bool>& cancel) {
+TissueSession::Result
+TissueSession::compute(const Request& request, std::shared_ptr<const TissueState> base,
+                       std::shared_ptr<const TissueState> current, const std::atomic<bool>& cancel,
+                       const std::function<void(const MeshingProgress&)>& progress) {
     Result result;
     const Scenario& scenario = request.scenario;
     if (scenario.tissues.empty()) {
@@ -301,7 +309,7 @@ TissueSession::Result TissueSession::compute(const Request& request, std::shared
     if (request.reload || !base) {
         TetMesh mesh;
         TriangleSurface surface;
-        if (Status s = loadTissue(scenario, tissue, mesh, surface, &cancel); !s.ok()) {
+        if (Status s = loadTissue(scenario, tissue, mesh, surface, &cancel, progress); !s.ok()) {
             result.error = QString::fromStdString(s.message());
             result.loadFailed = true;
             result.cancelled = cancel.load();
@@ -432,6 +440,50 @@ void TissueSession::finish(Result result) {
         startNext();
     if (!isBusy())
         emit busyChanged(false);
+}
+
+void TissueSession::reportProgress(std::uint64_t generation, std::uint64_t trial,
+                                   const MeshingProgress& progress) {
+    // Posted before the request's result, so the request still runs (or has just ended): it is
+    // dropped, as finish() drops its result, when cancelled, replaced by a newer trial, made
+    // for an older document or about to be replaced by a newer load.
+    if (m_cancel.load())
+        return;
+    const bool superseded = trial != 0
+                                ? trial != m_lastTrial
+                                : generation != m_generation || (m_queued && m_queued->reload);
+    if (superseded)
+        return;
+    emit loadProgress(stageText(progress), progress.fraction);
+}
+
+QString TissueSession::stageText(const MeshingProgress& progress) {
+    QString stage;
+    switch (progress.stage) {
+    case MeshingStage::CheckingSurface:
+        stage = tr("Checking the surface");
+        break;
+    case MeshingStage::Refining:
+        stage = tr("Meshing (Delaunay refinement)");
+        break;
+    case MeshingStage::Perturbing:
+        stage = tr("Removing slivers (perturbation)");
+        break;
+    case MeshingStage::Exuding:
+        stage = tr("Removing slivers (exudation)");
+        break;
+    case MeshingStage::MatchingVolume:
+        stage = tr("Matching the volume");
+        break;
+    case MeshingStage::CheckingQuality:
+        stage = tr("Checking element quality");
+        break;
+    }
+    if (progress.attempt > 1)
+        stage =
+            tr("%1 — attempt %2 of %3")
+                .arg(stage, QString::number(progress.attempt), QString::number(progress.attempts));
+    return stage;
 }
 
 void TissueSession::finishTrial(Result result) {

@@ -31,11 +31,16 @@
 // trial) stays failed and is reported by failed(). A state that derived is "verified"; the
 // comparison ignores the metadata and where relative paths are resolved from.
 //
+// Progress: while a load meshes a surface, loadProgress() reports each stage of the mesher
+// (MeshingProgress, core/mesher/tetrahedralize.h) on this thread; progress of a request that
+// was cancelled or superseded is dropped, as its result is.
+//
 // Trials: trial() derives a scenario that is not the document yet (a file being opened) on
 // the same worker, without touching the document or the published states; the studio
 // replaces the document only once its trial succeeded (DocumentOpener), and the trial's
 // states are then published at once instead of being derived again.
 
+#include "core/mesher/tetrahedralize.h"
 #include "scenario/scenario_document.h"
 #include "widgets/tissue_state.h"
 
@@ -44,6 +49,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <thread>
@@ -109,6 +115,11 @@ signals:
     /// A trial ended: ok (its states are published when the document is replaced by its
     /// scenario), or why not (also "cancelled").
     void trialFinished(std::uint64_t id, bool ok, const QString& message);
+    /// The load of the document's tissue or of a trial meshes a surface and started a stage:
+    /// `stage` names it for the author (with the attempt when the mesher re-meshes with another
+    /// seed), `fraction` (0..1) estimates the work done (MeshingProgress; a new attempt starts
+    /// again at 0). Only for the request that runs and is still wanted.
+    void loadProgress(const QString& stage, double fraction);
 
 private:
     struct Request {
@@ -137,13 +148,22 @@ private:
     void startNext();
     void finish(Result result);
     void finishTrial(Result result);
+    /// On this thread: emits loadProgress for the request of `generation` and `trial` (its
+    /// Request fields) unless that request was cancelled or superseded.
+    void reportProgress(std::uint64_t generation, std::uint64_t trial,
+                        const MeshingProgress& progress);
+    /// What loadProgress says of `progress`.
+    static QString stageText(const MeshingProgress& progress);
     /// After a failure of the document's state: reverts the document to its last verified
     /// state if it still holds the failed one; true if it did.
     bool refuse(const Scenario& failed);
     void addVerified(const Scenario& scenario);
     bool isVerified(const Scenario& scenario) const;
+    /// Derives `request` on the worker; `progress` receives the meshing stages of a load.
     static Result compute(const Request& request, std::shared_ptr<const TissueState> base,
-                          std::shared_ptr<const TissueState> current, const std::atomic<bool>& cancel);
+                          std::shared_ptr<const TissueState> current,
+                          const std::atomic<bool>& cancel,
+                          const std::function<void(const MeshingProgress&)>& progress);
 
     ScenarioDocument& m_document;
     std::shared_ptr<const TissueState> m_base, m_current;

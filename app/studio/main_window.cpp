@@ -37,6 +37,9 @@
 #include <QToolBar>
 #include <QUndoStack>
 
+#include <algorithm>
+#include <cmath>
+
 namespace resect {
 
 namespace {
@@ -94,6 +97,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_document, &ScenarioDocument::metadataChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ScenarioDocument::recentFilesChanged, this, &MainWindow::updateRecentMenu);
     connect(m_session, &TissueSession::busyChanged, this, &MainWindow::onBusyChanged);
+    connect(m_session, &TissueSession::loadProgress, this, &MainWindow::onLoadProgress);
     connect(m_session, &TissueSession::baseChanged, this, &MainWindow::updateStatus);
     connect(m_session, &TissueSession::currentChanged, this, &MainWindow::updateStatus);
     // Every new document is framed when the session publishes its tissue (baseChanged).
@@ -509,15 +513,33 @@ void MainWindow::onBusyChanged(bool busy) {
             m_progress->setMinimumDuration(800);
             m_progress->setAutoClose(false);
             m_progress->setAutoReset(false);
-            connect(m_progress, &QProgressDialog::canceled, m_session, &TissueSession::cancel);
+            connect(m_progress, &QProgressDialog::canceled, this, [this] {
+                m_session->cancel();
+                // The dialog hides at once, but meshing stops only at its next check (a sliver
+                // removal pass runs to its end): say so until the load has ended.
+                statusBar()->showMessage(tr("Cancelling..."));
+            });
         }
         return;
     }
+    // A cancelled open has said why by now; a cancelled reload of the document says nothing.
+    if (statusBar()->currentMessage() == tr("Cancelling..."))
+        statusBar()->clearMessage();
     if (m_progress != nullptr) {
         m_progress->hide();
         m_progress->deleteLater();
         m_progress = nullptr;
     }
+}
+
+void MainWindow::onLoadProgress(const QString& stage, double fraction) {
+    if (m_progress == nullptr)
+        return;
+    // Busy (0..0) until the mesher reports its first stage, then a percentage.
+    if (m_progress->maximum() == 0)
+        m_progress->setRange(0, 100);
+    m_progress->setLabelText(stage);
+    m_progress->setValue(static_cast<int>(std::lround(100.0 * std::clamp(fraction, 0.0, 1.0))));
 }
 
 void MainWindow::updateAccuracyPanel() {

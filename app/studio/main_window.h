@@ -120,6 +120,8 @@ private:
     void updateRecentMenu();
     void updateStatus();
     void onBusyChanged(bool busy);
+    /// A meshing stage started: the load's progress dialog shows it and the work done.
+    void onLoadProgress(const QString& stage, double fraction);
     void updateAccuracyPanel();
     void setLanguagePreference(const QString& code);
 
