@@ -115,9 +115,14 @@ void ShownTissue::refresh(bool topology) {
     m_frameNext = false;
     m_source = source;
     m_state = state;
-    m_viewport.setTetMesh(tissue.mesh(), frame);
+    // The surface is replaced before framing: the view frames the union of the tet mesh's
+    // and the surface's bounds, and the old surface (another tissue's, perhaps 100 times
+    // larger) would leave the new one a dot.
+    m_viewport.setTetMesh(tissue.mesh(), false);
     m_viewport.tetMeshActor().setTetSchemes(tissue.schemes());
     m_viewport.setSurface(tissue.surface().surface(), false);
+    if (frame)
+        m_viewport.resetCamera();
     applyVisibility();
     m_quality.meshChanged();
     if (frame)

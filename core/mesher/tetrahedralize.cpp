@@ -135,6 +135,7 @@ int collapseShortEdges(TetMesh& mesh, double h) {
 
 /// See defaultEdgeLength.
 constexpr double kEdgesPerThickness = 2.25;
+constexpr double kMaxThicknessRefinement = 1.5;
 
 /// Smallest dihedral angle over the mesh, in degrees.
 double minDihedralDegrees(const TetMesh& mesh) {
@@ -266,8 +267,10 @@ double defaultEdgeLength(const TriangleSurface& surface) {
         area += 0.5 * (surface.positions[t[1]] - a).cross(surface.positions[t[2]] - a).norm();
     }
     const double thickness = 3.0 * std::abs(enclosedVolume(surface)) / area;
+    // At most kMaxThicknessRefinement times finer than the box alone says: a thin-walled
+    // part (CGAL's cheese.off) would otherwise get tens of thousands of tets.
     if (std::isfinite(thickness) && thickness > 0.0)
-        h = std::min(h, thickness / kEdgesPerThickness);
+        h = std::max(std::min(h, thickness / kEdgesPerThickness), h / kMaxThicknessRefinement);
     if (!(h > 0.0))
         h = longest / 20.0;
     return h;

@@ -5,6 +5,8 @@
 #include "main_window.h"
 
 #include "core/mesh/quality.h"
+#include "core/mesher/procedural_surfaces.h"
+#include "scenario/surface_io.h"
 #include "scenario/accuracy_study.h"
 #include "widgets/accuracy_chart.h"
 #include "widgets/accuracy_panel.h"
@@ -847,6 +849,27 @@ private slots:
 
     // Issue 15: a successful open resets every view: the pending cut, what was drawn or
     // recorded, the picked tet, the study and its chart, the quality comparison, messages.
+    void aSmallAnatomyAfterALargeOneIsFramed() {
+        // Issue 18, found importing CGAL's femur (0.3 long) after the polyp (20 mm): the view
+        // framed the new tet mesh together with the old surface, and the femur was a dot.
+        Studio s;
+        QVERIFY(s.load());
+        const double radius = 0.15;
+        const QString file = m_dir.filePath(QStringLiteral("small-body.obj"));
+        QVERIFY(writeSurface(file.toStdString(), makeEllipsoid(Vec3(radius, 0.8 * radius, 0.6 * radius), 16, 32)).ok());
+        QVERIFY(s.open(file));
+        QVERIFY(s.tets() > 0);
+        // Framed: the camera looks at the body's centre from a distance of a few radii (the
+        // polyp's framing left it 600 of them away).
+        vtkCamera* camera = s.window.viewport()->camera();
+        double focal[3], position[3];
+        camera->GetFocalPoint(focal);
+        camera->GetPosition(position);
+        const double distance = (Vec3(position[0], position[1], position[2]) - Vec3(focal[0], focal[1], focal[2])).norm();
+        QVERIFY2(distance > radius && distance < 20.0 * radius, qPrintable(QString::number(distance)));
+        QVERIFY(Vec3(focal[0], focal[1], focal[2]).norm() < 0.5 * radius);
+    }
+
     void aSuccessfulOpenResetsEveryView() {
         const QString target = m_dir.filePath(QStringLiteral("reset-target.json"));
         Studio s;
