@@ -94,7 +94,7 @@ struct Studio {
         QSignalSpy failed(&window, &MainWindow::loadFailed);
         window.openFile(path);
         if (failed.count() == 0 && loaded.count() == 0)
-            QTest::qWaitFor([&] { return loaded.count() + failed.count() > 0; }, kWaitMs);
+            (void)QTest::qWaitFor([&] { return loaded.count() + failed.count() > 0; }, kWaitMs);
         return loaded.count() == 1 && failed.count() == 0 && idle();
     }
 };
