@@ -4,7 +4,7 @@
 <context>
     <name>resect::AccuracyChart</name>
     <message>
-        <location filename="../widgets/accuracy_chart.cpp" line="+78"/>
+        <location filename="../widgets/accuracy_chart.cpp" line="+88"/>
         <source>Subdivision</source>
         <translation>Unterteilung</translation>
     </message>
@@ -24,7 +24,7 @@
         <translation>Pareto-Front</translation>
     </message>
     <message>
-        <location line="+124"/>
+        <location line="+207"/>
         <source>%1 on %2</source>
         <translation>%1 auf %2</translation>
     </message>
@@ -86,11 +86,16 @@
         <source>Run the study to see what accuracy costs.</source>
         <translation>Führen Sie die Studie aus, um zu sehen, was Genauigkeit kostet.</translation>
     </message>
+    <message>
+        <location line="+52"/>
+        <source>Zoomed: double-click to show all</source>
+        <translation>Vergrößert: Doppelklick zeigt alles</translation>
+    </message>
 </context>
 <context>
     <name>resect::AccuracyPanel</name>
     <message>
-        <location filename="../widgets/accuracy_panel.cpp" line="+34"/>
+        <location filename="../widgets/accuracy_panel.cpp" line="+35"/>
         <source>Tiny (seconds)</source>
         <translation>Winzig (Sekunden)</translation>
     </message>
@@ -145,17 +150,17 @@
         <translation>Methode, d, Einrasten und Relaxation des gewählten Punkts als Schnitteinstellungen des Szenarios verwenden</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>Preset:</source>
         <translation>Voreinstellung:</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Cost:</source>
         <translation>Aufwand:</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+99"/>
         <source>Custom</source>
         <translation>Benutzerdefiniert</translation>
     </message>
@@ -202,8 +207,8 @@
     </message>
     <message>
         <location line="+13"/>
-        <source>Click a point of the chart to see its settings.</source>
-        <translation>Klicken Sie auf einen Punkt des Diagramms, um seine Einstellungen zu sehen.</translation>
+        <source>Click a point of the chart to see its settings; drag a rectangle to zoom, double-click to show all.</source>
+        <translation>Klicken Sie einen Punkt des Diagramms an, um seine Einstellungen zu sehen; ziehen Sie ein Rechteck zum Vergrößern, Doppelklick zeigt alles.</translation>
     </message>
     <message numerus="yes">
         <location line="+4"/>
@@ -777,15 +782,15 @@
 <context>
     <name>resect::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+291"/>
+        <location filename="../app/studio/main_window.cpp" line="+300"/>
         <location line="+11"/>
-        <location line="+153"/>
-        <location line="+57"/>
+        <location line="+169"/>
+        <location line="+59"/>
         <source>Resect Studio</source>
         <translation>Resect Studio</translation>
     </message>
     <message>
-        <location line="-342"/>
+        <location line="-366"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -810,7 +815,7 @@
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>&amp;Import anatomy...</source>
         <translation>Anatomie &amp;importieren...</translation>
     </message>
@@ -840,7 +845,7 @@
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
@@ -900,7 +905,7 @@
         <translation>&amp;Kamera zurücksetzen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Show &amp;tet mesh</source>
         <translation>&amp;Tetraedernetz anzeigen</translation>
     </message>
@@ -999,12 +1004,12 @@
     <message>
         <location line="+12"/>
         <location line="+7"/>
-        <location line="+21"/>
+        <location line="+37"/>
         <source>The scenario was not exported.</source>
         <translation>Das Szenario wurde nicht exportiert.</translation>
     </message>
     <message>
-        <location line="-28"/>
+        <location line="-44"/>
         <source>An export is already running.</source>
         <translation>Ein Export läuft bereits.</translation>
     </message>
@@ -1019,12 +1024,30 @@
         <translation>Export nach %1...</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>Export for the trainer: choose an empty folder</source>
-        <translation>Export für den Trainer: einen leeren Ordner wählen</translation>
+        <location line="+7"/>
+        <source>Export for the trainer: choose or create an empty folder</source>
+        <translation>Export für den Trainer: leeren Ordner wählen oder anlegen</translation>
+    </message>
+    <message>
+        <location line="+79"/>
+        <source>1 piece</source>
+        <translation>1 Teil</translation>
     </message>
     <message numerus="yes">
-        <location line="+7"/>
+        <location line="+0"/>
+        <source>%n pieces</source>
+        <translation>
+            <numerusform>%n Teil</numerusform>
+            <numerusform>%n Teile</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2 nodes, %3 tets, %4, min radius ratio %5, stable dt %6 s</source>
+        <translation>%1: %2 Knoten, %3 Tetraeder, %4, min. Radienverhältnis %5, stabiler Zeitschritt %6 s</translation>
+    </message>
+    <message numerus="yes">
+        <location line="-71"/>
         <source>Exported %n file(s) to %1</source>
         <translation>
             <numerusform>%n Datei nach %1 exportiert</numerusform>
@@ -1032,7 +1055,22 @@
         </translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+4"/>
+        <source>Export finished</source>
+        <translation>Export abgeschlossen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The trainer package is ready: the manifest lists every file with its SHA-256.</source>
+        <translation>Das Trainer-Paket ist fertig: Das Manifest führt jede Datei mit ihrer SHA-256-Prüfsumme auf.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open folder</source>
+        <translation>Ordner öffnen</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Resect Studio did not close properly. Recover the unsaved changes to %1?</source>
         <translation>Resect Studio wurde nicht ordnungsgemäß beendet. Die ungespeicherten Änderungen an %1 wiederherstellen?</translation>
     </message>
@@ -1067,12 +1105,7 @@
         <translation>Kein Gewebe</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>%1: %2 nodes, %3 tets, %4 pieces, min radius ratio %5, stable dt %6 s</source>
-        <translation>%1: %2 Knoten, %3 Tetraeder, %4 Teile, min. Radienverhältnis %5, stabiles dt %6 s</translation>
-    </message>
-    <message>
-        <location line="+13"/>
+        <location line="+18"/>
         <source>Loading and meshing the tissue...</source>
         <translation>Gewebe wird geladen und vernetzt...</translation>
     </message>
@@ -1093,7 +1126,7 @@
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="-394"/>
+        <location line="-418"/>
         <source>The tissue could not be loaded.</source>
         <translation>Das Gewebe konnte nicht geladen werden.</translation>
     </message>
@@ -1108,7 +1141,7 @@
         <translation>Die letzte Änderung wurde rückgängig gemacht: %1</translation>
     </message>
     <message>
-        <location line="+224"/>
+        <location line="+230"/>
         <source>Could not open %1.</source>
         <translation>%1 konnte nicht geöffnet werden.</translation>
     </message>
@@ -1817,7 +1850,7 @@
 <context>
     <name>resect::VtkViewport</name>
     <message>
-        <location filename="../widgets/vtk_viewport.cpp" line="+100"/>
+        <location filename="../widgets/vtk_viewport.cpp" line="+103"/>
         <source>3-D view unavailable: %1.</source>
         <translation>3-D-Ansicht nicht verfügbar: %1.</translation>
     </message>

@@ -4,7 +4,7 @@
 <context>
     <name>resect::AccuracyChart</name>
     <message>
-        <location filename="../widgets/accuracy_chart.cpp" line="+78"/>
+        <location filename="../widgets/accuracy_chart.cpp" line="+88"/>
         <source>Subdivision</source>
         <translation>Subdivision</translation>
     </message>
@@ -24,7 +24,7 @@
         <translation>Front de Pareto</translation>
     </message>
     <message>
-        <location line="+124"/>
+        <location line="+207"/>
         <source>%1 on %2</source>
         <translation>%1 sur %2</translation>
     </message>
@@ -86,11 +86,16 @@
         <source>Run the study to see what accuracy costs.</source>
         <translation>Lancez l&apos;étude pour voir ce que coûte la précision.</translation>
     </message>
+    <message>
+        <location line="+52"/>
+        <source>Zoomed: double-click to show all</source>
+        <translation>Agrandi : double-cliquez pour tout afficher</translation>
+    </message>
 </context>
 <context>
     <name>resect::AccuracyPanel</name>
     <message>
-        <location filename="../widgets/accuracy_panel.cpp" line="+34"/>
+        <location filename="../widgets/accuracy_panel.cpp" line="+35"/>
         <source>Tiny (seconds)</source>
         <translation>Très rapide (secondes)</translation>
     </message>
@@ -145,17 +150,17 @@
         <translation>Utiliser la méthode, d, l&apos;accrochage et la relaxation du point sélectionné comme paramètres de coupe du scénario</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>Preset:</source>
         <translation>Préréglage :</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Cost:</source>
         <translation>Coût :</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+99"/>
         <source>Custom</source>
         <translation>Personnalisé</translation>
     </message>
@@ -202,8 +207,8 @@
     </message>
     <message>
         <location line="+13"/>
-        <source>Click a point of the chart to see its settings.</source>
-        <translation>Cliquez sur un point du graphique pour voir ses réglages.</translation>
+        <source>Click a point of the chart to see its settings; drag a rectangle to zoom, double-click to show all.</source>
+        <translation>Cliquez sur un point du graphique pour voir ses réglages ; tracez un rectangle pour agrandir, double-cliquez pour tout afficher.</translation>
     </message>
     <message numerus="yes">
         <location line="+4"/>
@@ -777,15 +782,15 @@
 <context>
     <name>resect::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+291"/>
+        <location filename="../app/studio/main_window.cpp" line="+300"/>
         <location line="+11"/>
-        <location line="+153"/>
-        <location line="+57"/>
+        <location line="+169"/>
+        <location line="+59"/>
         <source>Resect Studio</source>
         <translation>Resect Studio</translation>
     </message>
     <message>
-        <location line="-342"/>
+        <location line="-366"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
@@ -810,7 +815,7 @@
         <translation>&amp;Ouvrir...</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>&amp;Import anatomy...</source>
         <translation>&amp;Importer une anatomie...</translation>
     </message>
@@ -840,7 +845,7 @@
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
     </message>
@@ -900,7 +905,7 @@
         <translation>&amp;Réinitialiser la caméra</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Show &amp;tet mesh</source>
         <translation>Afficher le maillage &amp;tétraédrique</translation>
     </message>
@@ -999,12 +1004,12 @@
     <message>
         <location line="+12"/>
         <location line="+7"/>
-        <location line="+21"/>
+        <location line="+37"/>
         <source>The scenario was not exported.</source>
         <translation>Le scénario n&apos;a pas été exporté.</translation>
     </message>
     <message>
-        <location line="-28"/>
+        <location line="-44"/>
         <source>An export is already running.</source>
         <translation>Une exportation est déjà en cours.</translation>
     </message>
@@ -1019,12 +1024,30 @@
         <translation>Exportation vers %1...</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>Export for the trainer: choose an empty folder</source>
-        <translation>Exportation pour le simulateur d&apos;entraînement : choisissez un dossier vide</translation>
+        <location line="+7"/>
+        <source>Export for the trainer: choose or create an empty folder</source>
+        <translation>Export pour le simulateur : choisir ou créer un dossier vide</translation>
+    </message>
+    <message>
+        <location line="+79"/>
+        <source>1 piece</source>
+        <translation>1 morceau</translation>
     </message>
     <message numerus="yes">
-        <location line="+7"/>
+        <location line="+0"/>
+        <source>%n pieces</source>
+        <translation>
+            <numerusform>%n morceau</numerusform>
+            <numerusform>%n morceaux</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2 nodes, %3 tets, %4, min radius ratio %5, stable dt %6 s</source>
+        <translation>%1 : %2 nœuds, %3 tétraèdres, %4, rapport des rayons min. %5, pas de temps stable %6 s</translation>
+    </message>
+    <message numerus="yes">
+        <location line="-71"/>
         <source>Exported %n file(s) to %1</source>
         <translation>
             <numerusform>%n fichier exporté vers %1</numerusform>
@@ -1032,7 +1055,22 @@
         </translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+4"/>
+        <source>Export finished</source>
+        <translation>Export terminé</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The trainer package is ready: the manifest lists every file with its SHA-256.</source>
+        <translation>Le paquet pour le simulateur est prêt : le manifeste liste chaque fichier avec son SHA-256.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open folder</source>
+        <translation>Ouvrir le dossier</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Resect Studio did not close properly. Recover the unsaved changes to %1?</source>
         <translation>Resect Studio ne s&apos;est pas fermé correctement. Récupérer les modifications non enregistrées de %1 ?</translation>
     </message>
@@ -1067,12 +1105,7 @@
         <translation>Aucun tissu</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>%1: %2 nodes, %3 tets, %4 pieces, min radius ratio %5, stable dt %6 s</source>
-        <translation>%1 : %2 nœuds, %3 tétraèdres, %4 morceaux, rapport des rayons min. %5, dt stable %6 s</translation>
-    </message>
-    <message>
-        <location line="+13"/>
+        <location line="+18"/>
         <source>Loading and meshing the tissue...</source>
         <translation>Chargement et maillage du tissu...</translation>
     </message>
@@ -1093,7 +1126,7 @@
         <translation>Annuler</translation>
     </message>
     <message>
-        <location line="-394"/>
+        <location line="-418"/>
         <source>The tissue could not be loaded.</source>
         <translation>Le tissu n&apos;a pas pu être chargé.</translation>
     </message>
@@ -1108,7 +1141,7 @@
         <translation>La dernière modification a été annulée : %1</translation>
     </message>
     <message>
-        <location line="+224"/>
+        <location line="+230"/>
         <source>Could not open %1.</source>
         <translation>Impossible d&apos;ouvrir %1.</translation>
     </message>
@@ -1817,7 +1850,7 @@
 <context>
     <name>resect::VtkViewport</name>
     <message>
-        <location filename="../widgets/vtk_viewport.cpp" line="+100"/>
+        <location filename="../widgets/vtk_viewport.cpp" line="+103"/>
         <source>3-D view unavailable: %1.</source>
         <translation>Vue 3D indisponible : %1.</translation>
     </message>

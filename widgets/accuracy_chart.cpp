@@ -23,6 +23,11 @@ constexpr double kLeft = 64, kRight = 16,
                  kBottom = 44;     ///< px: margins around the axes (top: the legend)
 constexpr double kLegendLine = 18; ///< px: one line of the legend
 constexpr double kSymbolWidth = 2 * kMarkerSize + 5; ///< px: a legend symbol and its gap
+/// Points nearer than this (px) to each other are spread on a circle of kSpreadRadius.
+constexpr double kCoincident = 1.5;
+constexpr double kSpreadRadius = 2.2 * kMarkerSize;
+/// A drag smaller than this (px) either way is a click, not a zoom rectangle.
+constexpr double kMinZoomDrag = 6.0;
 
 const char* const kKnownMethods[] = {"subdivision", "hybrid-standard", "hybrid-enhanced"};
 
@@ -56,10 +61,15 @@ AccuracyChart::AccuracyChart(QWidget* parent) : QWidget(parent) {
 void AccuracyChart::setRows(std::vector<StudyRow> rows) {
     m_rows = std::move(rows);
     m_selected = -1;
+    if (m_rows.empty()) // a new study or tissue: show all of what comes
+        m_zoom.reset();
+    m_dragStart.reset();
     update();
 }
 
 void AccuracyChart::setCostAxis(CostAxis axis) {
+    if (axis != m_axis)
+        m_zoom.reset(); // the zoomed x range was of the other cost
     m_axis = axis;
     update();
 }
@@ -141,6 +151,8 @@ double AccuracyChart::logCost(const StudyRow& row) const {
 }
 
 AccuracyChart::Ranges AccuracyChart::ranges() const {
+    if (m_zoom)
+        return *m_zoom;
     Ranges r;
     double xLo = std::numeric_limits<double>::infinity(), xHi = -xLo, yHi = 0;
     for (const StudyRow& row : m_rows) {
@@ -177,21 +189,102 @@ QPointF AccuracyChart::toPixel(double x, double y, const Ranges& r, const QRectF
     return {plot.left() + fx * plot.width(), plot.bottom() - fy * plot.height()};
 }
 
-QPointF AccuracyChart::pointPosition(int row) const {
+QPointF AccuracyChart::dataPosition(int row) const {
     if (row < 0 || row >= static_cast<int>(m_rows.size()))
         return {-1, -1};
     const StudyRow& r = m_rows[static_cast<std::size_t>(row)];
     return toPixel(logCost(r), r.sweepErrorMax, ranges(), plotRect());
 }
 
-int AccuracyChart::rowAt(QPointF pixel) const {
+std::vector<QPointF> AccuracyChart::drawnPositions() const {
     const Ranges r = ranges();
     const QRectF plot = plotRect();
+    std::vector<QPointF> at;
+    at.reserve(m_rows.size());
+    for (const StudyRow& row : m_rows)
+        at.push_back(toPixel(logCost(row), row.sweepErrorMax, r, plot));
+    // Groups of coincident points (each point joins the group of the first earlier point it
+    // coincides with), spread evenly on a circle around the group's place.
+    const std::size_t n = at.size();
+    std::vector<std::size_t> group(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        group[i] = i;
+        for (std::size_t j = 0; j < i; ++j)
+            if (group[j] == j && std::hypot(at[i].x() - at[j].x(), at[i].y() - at[j].y()) < kCoincident) {
+                group[i] = j;
+                break;
+            }
+    }
+    std::vector<int> size(n, 0), rank(n, 0);
+    for (std::size_t i = 0; i < n; ++i)
+        rank[i] = size[group[i]]++;
+    std::vector<QPointF> drawn = at;
+    for (std::size_t i = 0; i < n; ++i) {
+        const int count = size[group[i]];
+        if (count < 2)
+            continue;
+        const double angle = 2.0 * M_PI * rank[i] / count - M_PI / 2;
+        drawn[i] = at[group[i]] + QPointF(kSpreadRadius * std::cos(angle), kSpreadRadius * std::sin(angle));
+    }
+    return drawn;
+}
+
+QPointF AccuracyChart::pointPosition(int row) const {
+    if (row < 0 || row >= static_cast<int>(m_rows.size()))
+        return {-1, -1};
+    return drawnPositions()[static_cast<std::size_t>(row)];
+}
+
+void AccuracyChart::zoomTo(const QRectF& pixels) {
+    const QRectF box = pixels.normalized();
+    if (box.width() < kMinZoomDrag || box.height() < kMinZoomDrag)
+        return;
+    const Ranges r = ranges();
+    const QRectF plot = plotRect();
+    const auto toX = [&](double px) { return r.xLo + (px - plot.left()) / plot.width() * (r.xHi - r.xLo); };
+    const auto toY = [&](double py) { return r.yLo + (plot.bottom() - py) / plot.height() * (r.yHi - r.yLo); };
+    Ranges z;
+    z.xLo = toX(box.left());
+    z.xHi = toX(box.right());
+    z.yLo = toY(box.bottom());
+    z.yHi = toY(box.top());
+    if (!(z.xHi > z.xLo) || !(z.yHi > z.yLo))
+        return;
+    m_zoom = z;
+    update();
+}
+
+void AccuracyChart::resetZoom() {
+    m_zoom.reset();
+    update();
+}
+
+QString AccuracyChart::costLabel(double logValue, const QLocale& locale) {
+    const double value = std::pow(10.0, logValue);
+    const int decade = static_cast<int>(std::floor(logValue + 1e-9));
+    if (decade >= -3 && decade <= 4) {
+        if (value >= 1.0)
+            return locale.toString(static_cast<qlonglong>(std::llround(value)));
+        return locale.toString(value, 'g', 3);
+    }
+    static const char16_t* const digits[] = {u"\u2070", u"\u00b9", u"\u00b2", u"\u00b3", u"\u2074",
+                                             u"\u2075", u"\u2076", u"\u2077", u"\u2078", u"\u2079"};
+    QString exponent;
+    for (const QChar c : QString::number(std::abs(decade)))
+        exponent += QString::fromUtf16(digits[c.digitValue()]);
+    if (decade < 0)
+        exponent.prepend(QChar(0x207B)); // superscript minus
+    const long mantissa = std::lround(value / std::pow(10.0, decade));
+    const QString power = QStringLiteral("10") + exponent;
+    return mantissa == 1 ? power : QString::number(mantissa) + QChar(0x00D7) + power;
+}
+
+int AccuracyChart::rowAt(QPointF pixel) const {
+    const std::vector<QPointF> drawn = drawnPositions();
     int best = -1;
     double bestDist = kPickRadius;
-    for (int i = 0; i < static_cast<int>(m_rows.size()); ++i) {
-        const StudyRow& row = m_rows[static_cast<std::size_t>(i)];
-        const QPointF p = toPixel(logCost(row), row.sweepErrorMax, r, plot);
+    for (int i = 0; i < static_cast<int>(drawn.size()); ++i) {
+        const QPointF p = drawn[static_cast<std::size_t>(i)];
         const double dist = std::hypot(p.x() - pixel.x(), p.y() - pixel.y());
         if (dist <= bestDist && (best < 0 || dist < bestDist)) {
             best = i;
@@ -284,12 +377,12 @@ void AccuracyChart::paintEvent(QPaintEvent*) {
         painter.drawLine(QPointF(px, plot.top()), QPointF(px, plot.bottom()));
         painter.setPen(text);
         painter.drawLine(QPointF(px, plot.bottom()), QPointF(px, plot.bottom() + 4));
-        const QString label = locale.toString(std::pow(10.0, x), 'g', 3);
+        const QString label = costLabel(x, locale);
         painter.drawText(QRectF(px - 40, plot.bottom() + 5, 80, fm.height()),
                          Qt::AlignHCenter | Qt::AlignTop, label);
     }
-    const double yStep = niceStep(r.yHi / 5);
-    for (double y = 0; y <= r.yHi + 1e-9 * yStep; y += yStep) {
+    const double yStep = niceStep((r.yHi - std::max(0.0, r.yLo)) / 5);
+    for (double y = std::max(0.0, yStep * std::ceil(r.yLo / yStep - 1e-9)); y <= r.yHi + 1e-9 * yStep; y += yStep) {
         const double py = toPixel(r.xLo, y, r, plot).y();
         painter.setPen(QPen(grid, 0, Qt::DotLine));
         painter.drawLine(QPointF(plot.left(), py), QPointF(plot.right(), py));
@@ -342,20 +435,36 @@ void AccuracyChart::paintEvent(QPaintEvent*) {
         painter.setBrush(Qt::NoBrush);
         painter.drawPath(path);
     }
+    const std::vector<QPointF> drawn = drawnPositions();
     for (std::size_t i = 0; i < m_rows.size(); ++i) {
         const StudyRow& row = m_rows[i];
         const QColor c = methodColour(row.method);
+        // A spread point is tied to its data position by a thin line.
+        const QPointF at = toPixel(logCost(row), row.sweepErrorMax, r, plot);
+        if (std::hypot(drawn[i].x() - at.x(), drawn[i].y() - at.y()) > kCoincident) {
+            painter.setPen(QPen(grid, 0));
+            painter.drawLine(at, drawn[i]);
+        }
         painter.setPen(QPen(c.darker(140), 1));
         painter.setBrush(QColor(c.red(), c.green(), c.blue(), 170));
-        drawMarker(painter, row.method, toPixel(logCost(row), row.sweepErrorMax, r, plot),
-                   kMarkerSize);
+        drawMarker(painter, row.method, drawn[i], kMarkerSize);
     }
-    if (m_selected >= 0) {
+    if (m_selected >= 0 && m_selected < static_cast<int>(drawn.size())) {
         painter.setPen(QPen(text, 2));
         painter.setBrush(Qt::NoBrush);
-        painter.drawEllipse(pointPosition(m_selected), kMarkerSize + 4, kMarkerSize + 4);
+        painter.drawEllipse(drawn[static_cast<std::size_t>(m_selected)], kMarkerSize + 4, kMarkerSize + 4);
     }
     painter.setClipping(false);
+    if (m_dragStart) {
+        painter.setPen(QPen(palette().color(QPalette::Highlight), 1, Qt::DashLine));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawRect(QRectF(*m_dragStart, m_dragNow).normalized());
+    }
+    if (m_zoom) {
+        painter.setPen(palette().color(QPalette::PlaceholderText));
+        painter.drawText(plot.adjusted(4, 2, -4, -2), Qt::AlignRight | Qt::AlignTop,
+                         tr("Zoomed: double-click to show all"));
+    }
 
     // Legend along the top: one marker per method present, then the front's line.
     double legendHeight = 0;
@@ -378,6 +487,11 @@ void AccuracyChart::paintEvent(QPaintEvent*) {
 }
 
 void AccuracyChart::mousePressEvent(QMouseEvent* event) {
+    if (event->button() == Qt::RightButton && m_zoom) {
+        resetZoom();
+        event->accept();
+        return;
+    }
     if (event->button() != Qt::LeftButton) {
         QWidget::mousePressEvent(event);
         return;
@@ -386,7 +500,32 @@ void AccuracyChart::mousePressEvent(QMouseEvent* event) {
     if (row >= 0) {
         setSelectedRow(row);
         emit rowClicked(row);
+    } else if (plotRect().contains(event->position())) {
+        m_dragStart = event->position();
+        m_dragNow = event->position();
     }
+    event->accept();
+}
+
+void AccuracyChart::mouseMoveEvent(QMouseEvent* event) {
+    if (!m_dragStart) {
+        QWidget::mouseMoveEvent(event);
+        return;
+    }
+    m_dragNow = event->position();
+    update();
+    event->accept();
+}
+
+void AccuracyChart::mouseReleaseEvent(QMouseEvent* event) {
+    if (!m_dragStart || event->button() != Qt::LeftButton) {
+        QWidget::mouseReleaseEvent(event);
+        return;
+    }
+    const QRectF box(*m_dragStart, event->position());
+    m_dragStart.reset();
+    zoomTo(box); // ignored when it was a click
+    update();
     event->accept();
 }
 
@@ -399,6 +538,9 @@ void AccuracyChart::mouseDoubleClickEvent(QMouseEvent* event) {
     if (row >= 0) {
         setSelectedRow(row);
         emit rowDoubleClicked(row);
+    } else {
+        m_dragStart.reset();
+        resetZoom();
     }
     event->accept();
 }

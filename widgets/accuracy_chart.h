@@ -9,15 +9,20 @@
 // can be grabbed) under the `offscreen` platform.
 //
 // Clicking a point selects its row and emits rowClicked, a double click emits
-// rowDoubleClicked; hovering shows the row's settings and figures as a tooltip.
+// rowDoubleClicked; hovering shows the row's settings and figures as a tooltip. Points that
+// would cover each other (settings with the same cost and error) are spread on a small
+// circle around their place, so every one can be seen and clicked. Dragging a rectangle on
+// empty space zooms to it; a double click on empty space (or a right click) shows all again.
 
 #include "scenario/accuracy_study.h"
 
 #include <QColor>
+#include <QLocale>
 #include <QPointF>
 #include <QRectF>
 #include <QWidget>
 
+#include <optional>
 #include <vector>
 
 namespace resect {
@@ -47,8 +52,23 @@ public:
     /// The row whose point is nearest to `pixel` (widget coordinates) within a few pixels;
     /// -1 if none is.
     int rowAt(QPointF pixel) const;
-    /// Where the point of `row` is drawn (widget coordinates); (-1, -1) for an invalid row.
+    /// Where the point of `row` is drawn (widget coordinates; spread from its data position
+    /// when other points coincide with it); (-1, -1) for an invalid row.
     QPointF pointPosition(int row) const;
+    /// Where `row`'s cost and error are on the axes (widget coordinates), before spreading.
+    QPointF dataPosition(int row) const;
+
+    /// Zooms to the data inside `pixels` (widget coordinates); ignored if it is smaller
+    /// than a few pixels either way.
+    void zoomTo(const QRectF& pixels);
+    /// Shows all rows again.
+    void resetZoom();
+    bool isZoomed() const { return m_zoom.has_value(); }
+
+    /// A tick label of the cost axis for the cost 10^logValue: plain numbers with digit
+    /// grouping from 0.001 to 99 999 ("2", "1,000", "0.05"), powers of ten beyond
+    /// ("10⁶", "2×10⁷"), never "1e+03".
+    static QString costLabel(double logValue, const QLocale& locale);
     /// The rows of `method` ("subdivision", ...) on its Pareto front under the current cost
     /// axis, by increasing cost (and so decreasing error).
     std::vector<int> paretoFront(const std::string& method) const;
@@ -74,6 +94,8 @@ protected:
     void paintEvent(QPaintEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
     bool event(QEvent* event) override;
 
 private:
@@ -96,9 +118,15 @@ private:
     };
     std::vector<LegendItem> legendLayout(double& height) const;
 
+    /// Every row's drawn position (pointPosition), computed together: O(rows^2).
+    std::vector<QPointF> drawnPositions() const;
+
     std::vector<StudyRow> m_rows;
     CostAxis m_axis = CostAxis::SimMsPerSecond;
     int m_selected = -1;
+    std::optional<Ranges> m_zoom;
+    std::optional<QPointF> m_dragStart; ///< a zoom rectangle being dragged from here
+    QPointF m_dragNow;
 };
 
 } // namespace resect

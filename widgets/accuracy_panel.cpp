@@ -5,6 +5,7 @@
 #include "widgets/accuracy_chart.h"
 
 #include <QComboBox>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
@@ -73,23 +74,29 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent) {
         tr("Use the selected point's method, d, snapping and relaxation as the scenario's cut "
            "settings"));
 
-    auto* controls = new QHBoxLayout;
-    controls->addWidget(new QLabel(tr("Preset:"), this));
-    controls->addWidget(m_preset);
-    controls->addWidget(new QLabel(tr("Cost:"), this));
-    controls->addWidget(m_costAxis);
-    controls->addStretch(1);
-    controls->addWidget(m_run);
-    controls->addWidget(m_cancelButton);
+    // Two short rows instead of one long one, so that the panel fits a dock a third of a
+    // 1280-pixel window wide without cutting off Cancel and Adopt.
+    auto* controls = new QGridLayout;
+    controls->addWidget(new QLabel(tr("Preset:"), this), 0, 0);
+    controls->addWidget(m_preset, 0, 1);
+    controls->addWidget(m_run, 0, 2);
+    controls->addWidget(new QLabel(tr("Cost:"), this), 1, 0);
+    controls->addWidget(m_costAxis, 1, 1);
+    controls->addWidget(m_cancelButton, 1, 2);
+    controls->setColumnStretch(1, 1);
     auto* selection = new QHBoxLayout;
     selection->addWidget(m_selection, 1);
-    selection->addWidget(m_adopt);
+    selection->addWidget(m_adopt, 0, Qt::AlignTop);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(controls);
     layout->addWidget(m_progress);
     layout->addWidget(m_status);
     layout->addWidget(m_chart, 1);
     layout->addLayout(selection);
+    m_preset->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_costAxis->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_preset->setMinimumContentsLength(8);
+    m_costAxis->setMinimumContentsLength(8);
 
     connect(m_run, &QPushButton::clicked, this, &AccuracyPanel::run);
     connect(m_cancelButton, &QPushButton::clicked, this, &AccuracyPanel::cancel);
@@ -294,7 +301,7 @@ void AccuracyPanel::adoptSelected() {
 
 QString AccuracyPanel::rowSummary(int row) const {
     if (row < 0 || row >= static_cast<int>(m_rows.size()))
-        return tr("Click a point of the chart to see its settings.");
+        return tr("Click a point of the chart to see its settings; drag a rectangle to zoom, double-click to show all.");
     const StudyRow& r = m_rows[static_cast<std::size_t>(row)];
     const QLocale locale;
     const auto num = [&](double v) { return locale.toString(v, 'g', 3); };

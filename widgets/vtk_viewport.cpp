@@ -15,6 +15,7 @@
 #include <vtkRenderer.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace resect {
@@ -38,6 +39,9 @@ Bounds unite(const Bounds& a, const Bounds& b) {
 /// Zoom per pixel of a zoom drag and per 15-degree wheel step.
 constexpr double kZoomPerPixel = 1.01;
 constexpr double kZoomPerWheelStep = 1.1;
+/// An oblique default view: looking along +y, slightly from above and the side, z up.
+constexpr std::array<double, 3> kStartingDirection{-0.45, 1.0, -0.35};
+constexpr std::array<double, 3> kStartingUp{0.0, 0.0, 1.0};
 
 } // namespace
 
@@ -47,8 +51,7 @@ VtkViewport::VtkViewport(QWidget* parent) : QWidget(parent) {
     setMinimumSize(160, 120);
     setFocusPolicy(Qt::StrongFocus);
 
-    // An oblique default view: looking down -y, slightly from above and the side, z up.
-    m_camera.setViewDirection({-0.45, 1.0, -0.35}, {0.0, 0.0, 1.0});
+    m_camera.setViewDirection(kStartingDirection, kStartingUp);
 
     QString reason;
     if (openGlAvailable(&reason))
@@ -189,6 +192,11 @@ void VtkViewport::resetCamera() {
     const double aspect = height() > 0 ? double(width()) / double(height()) : 1.0;
     m_camera.reset(bounds, aspect);
     cameraMoved();
+}
+
+void VtkViewport::restoreStartingView() {
+    m_camera.setViewDirection(kStartingDirection, kStartingUp);
+    resetCamera();
 }
 
 bool VtkViewport::hasRendering() const {

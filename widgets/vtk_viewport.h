@@ -68,6 +68,9 @@ public:
 
     /// Frames the bounds of everything shown, keeping the view direction.
     void resetCamera();
+    /// The starting view (the oblique default direction, z up), framing the scene: what
+    /// View > Reset camera does. resetCamera() keeps the current direction.
+    void restoreStartingView();
     /// The camera used for rendering and for the camera maths (picking, strokes).
     vtkCamera* camera() const { return m_camera.camera(); }
     /// Bounds of everything shown; invalid (min > max) when the scene is empty.

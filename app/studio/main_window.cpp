@@ -24,6 +24,7 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QCloseEvent>
+#include <QDesktopServices>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -31,11 +32,13 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QProgressDialog>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoStack>
+#include <QUrl>
 
 #include <algorithm>
 #include <cmath>
@@ -179,6 +182,7 @@ void MainWindow::createActions() {
     }
     QAction* open = file->addAction(tr("&Open..."), this, &MainWindow::openFileDialog);
     open->setShortcut(QKeySequence::Open);
+    open->setObjectName(QStringLiteral("openFile"));
     QAction* import = file->addAction(tr("&Import anatomy..."), this, &MainWindow::importAnatomyDialog);
     import->setObjectName(QStringLiteral("importAnatomy"));
     m_recentMenu = file->addMenu(tr("Open &recent"));
@@ -193,6 +197,10 @@ void MainWindow::createActions() {
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
+    // The file shortcuts work from every window of the studio, floating docks included
+    // (with the default window context, Ctrl+O in an undocked panel did nothing).
+    for (QAction* a : {open, saveAction, saveAsAction, quit})
+        a->setShortcutContext(Qt::ApplicationShortcut);
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     QAction* undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
@@ -226,7 +234,8 @@ void MainWindow::createActions() {
     sim->addAction(tr("&Reset"), m_simulation, &SimulationController::reset);
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
-    m_viewMenu->addAction(tr("&Reset camera"), m_viewport, &VtkViewport::resetCamera);
+    QAction* resetView = m_viewMenu->addAction(tr("&Reset camera"), m_viewport, &VtkViewport::restoreStartingView);
+    resetView->setObjectName(QStringLiteral("resetCamera"));
     m_showTets = m_viewMenu->addAction(tr("Show &tet mesh"));
     m_showTets->setCheckable(true);
     m_showTets->setChecked(true);
@@ -430,16 +439,32 @@ bool MainWindow::exportPackage(const QString& outDir, bool force) {
 }
 
 void MainWindow::exportDialog() {
-    const QString dir = QFileDialog::getExistingDirectory(this, tr("Export for the trainer: choose an empty folder"));
+    // Qt's own dialog (not a platform one, which may lack it) has "Create New Folder".
+    const QString dir = QFileDialog::getExistingDirectory(
+        this, tr("Export for the trainer: choose or create an empty folder"), QString(),
+        QFileDialog::ShowDirsOnly | QFileDialog::DontUseNativeDialog);
     if (!dir.isEmpty())
         exportPackage(dir, false);
 }
 
 void MainWindow::onExportFinished(bool ok, const QString& message, const QStringList& files) {
     if (ok) {
-        statusBar()->showMessage(tr("Exported %n file(s) to %1", nullptr, int(files.size()))
-                                     .arg(QString::fromStdString(m_export->summary().outDir)),
-                                 10000);
+        const QString dir = QString::fromStdString(m_export->summary().outDir);
+        const QString text = tr("Exported %n file(s) to %1", nullptr, int(files.size())).arg(dir);
+        statusBar()->showMessage(text, 10000);
+        // A confirmation the author cannot miss, with the way to the package (window-modal,
+        // so it does not block the event loop).
+        auto* done = new QMessageBox(QMessageBox::Information, tr("Export finished"), text, QMessageBox::Ok, this);
+        done->setObjectName(QStringLiteral("exportConfirmation"));
+        done->setInformativeText(tr("The trainer package is ready: the manifest lists every file with its SHA-256."));
+        QPushButton* openFolder = done->addButton(tr("Open folder"), QMessageBox::ActionRole);
+        connect(openFolder, &QPushButton::clicked, this,
+                [dir] { QDesktopServices::openUrl(QUrl::fromLocalFile(dir)); });
+        done->setAttribute(Qt::WA_DeleteOnClose);
+        if (m_errorDialogs)
+            done->open();
+        else
+            done->deleteLater(); // tests: the status bar and exportFinished() tell
     } else {
         showError(tr("The scenario was not exported."), message);
     }
@@ -494,11 +519,13 @@ void MainWindow::updateStatus() {
         m_statusLabel->setText(isLoading() ? tr("Loading...") : tr("No tissue"));
         return;
     }
-    m_statusLabel->setText(tr("%1: %2 nodes, %3 tets, %4 pieces, min radius ratio %5, stable dt %6 s")
+    // English has no numerus forms without a translation file: "1 piece" is its own string.
+    const QString pieces = current->pieces == 1 ? tr("1 piece") : tr("%n pieces", nullptr, current->pieces);
+    m_statusLabel->setText(tr("%1: %2 nodes, %3 tets, %4, min radius ratio %5, stable dt %6 s")
                                .arg(current->tissueName)
                                .arg(current->mesh().nodeCount())
                                .arg(current->mesh().tetCount())
-                               .arg(current->pieces)
+                               .arg(pieces)
                                .arg(current->quality.minRadiusRatio, 0, 'g', 3)
                                .arg(current->stableDt, 0, 'g', 3));
 }

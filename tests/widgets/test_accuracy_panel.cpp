@@ -149,9 +149,9 @@ private slots:
         for (std::size_t a = 0; a < rows.size(); ++a)
             for (std::size_t b = 0; b < rows.size(); ++b) {
                 if (rows[a].simMsPerSecond < rows[b].simMsPerSecond)
-                    QVERIFY(chart->pointPosition(int(a)).x() <= chart->pointPosition(int(b)).x());
+                    QVERIFY(chart->dataPosition(int(a)).x() <= chart->dataPosition(int(b)).x());
                 if (rows[a].sweepErrorMax < rows[b].sweepErrorMax)
-                    QVERIFY(chart->pointPosition(int(a)).y() >= chart->pointPosition(int(b)).y());
+                    QVERIFY(chart->dataPosition(int(a)).y() >= chart->dataPosition(int(b)).y());
             }
 
         // Click a point: rows whose point is its own nearest (coincident points go to the
@@ -287,6 +287,96 @@ private slots:
         r = fakeRow("hybrid-standard", 0.1, 0, 1, 1);
         s = AccuracyPanel::cutSettingsForRow(r, CutSettings{});
         QCOMPARE(s.triangulation, FaceTriangulation::Standard);
+    }
+
+    void coincidentPointsAreSpreadAndClickable() {
+        // Issue 19: settings with the same cost and error piled up on one pixel. Spread, each
+        // is drawn apart from the others, near its data position, and can be clicked.
+        AccuracyChart chart;
+        chart.resize(500, 360);
+        std::vector<StudyRow> rows;
+        for (int i = 0; i < 5; ++i)
+            rows.push_back(fakeRow("hybrid-enhanced", 0.1 + 0.05 * i, 0.2, 20, 1));
+        rows.push_back(fakeRow("subdivision", 0.1, 0.0, 4000, 4));
+        chart.setRows(rows);
+        for (int i = 0; i < 5; ++i) {
+            QCOMPARE(chart.dataPosition(i), chart.dataPosition(0));
+            const QPointF p = chart.pointPosition(i);
+            const QPointF d = p - chart.dataPosition(i);
+            QVERIFY(std::hypot(d.x(), d.y()) <= 12.0);
+            for (int j = 0; j < i; ++j) {
+                const QPointF q = p - chart.pointPosition(j);
+                QVERIFY2(std::hypot(q.x(), q.y()) >= 8.0, qPrintable(QString("%1 %2").arg(i).arg(j)));
+            }
+            QCOMPARE(chart.rowAt(p), i);
+        }
+        QCOMPARE(chart.pointPosition(5), chart.dataPosition(5)); // alone: not moved
+    }
+
+    void dragZoomsAndDoubleClickShowsAll() {
+        // Two clusters four decades apart: zooming into one spreads its points over the plot.
+        AccuracyChart chart;
+        chart.resize(500, 360);
+        chart.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&chart));
+        std::vector<StudyRow> rows{fakeRow("hybrid-enhanced", 0.1, 0.20, 1000, 1),
+                                   fakeRow("hybrid-enhanced", 0.2, 0.18, 1100, 1),
+                                   fakeRow("hybrid-standard", 0.1, 0.19, 1200, 1),
+                                   fakeRow("subdivision", 0.1, 0.0, 1e7, 4)};
+        chart.setRows(rows);
+        const auto spread = [&] { return std::abs(chart.pointPosition(2).x() - chart.pointPosition(0).x()); };
+        const double before = spread();
+        QVERIFY(!chart.isZoomed());
+        // Drag a rectangle around the first three points, starting on empty space.
+        QRectF box;
+        for (int i = 0; i < 3; ++i)
+            box = box.isNull() ? QRectF(chart.pointPosition(i), QSizeF(1, 1)) : box.united(QRectF(chart.pointPosition(i), QSizeF(1, 1)));
+        box = box.adjusted(-20, -20, 20, 20).intersected(chart.plotRect().adjusted(1, 1, -1, -1));
+        QCOMPARE(chart.rowAt(box.topLeft()), -1);
+        QTest::mousePress(&chart, Qt::LeftButton, {}, box.topLeft().toPoint());
+        QMouseEvent move(QEvent::MouseMove, box.center(), chart.mapToGlobal(box.center()), Qt::NoButton, Qt::LeftButton, {});
+        QApplication::sendEvent(&chart, &move);
+        QTest::mouseRelease(&chart, Qt::LeftButton, {}, box.bottomRight().toPoint());
+        QVERIFY(chart.isZoomed());
+        QVERIFY2(spread() > 5 * before, qPrintable(QString("%1 -> %2").arg(before).arg(spread())));
+        for (int i = 0; i < 3; ++i)
+            QVERIFY(chart.plotRect().contains(chart.pointPosition(i)));
+        QVERIFY(!chart.grab().isNull());
+        // A click on empty space does not zoom; a double click shows all again.
+        const QPoint empty = (chart.plotRect().topLeft() + QPointF(3, 30)).toPoint();
+        QTest::mouseClick(&chart, Qt::LeftButton, {}, empty);
+        QVERIFY(chart.isZoomed());
+        QTest::mouseDClick(&chart, Qt::LeftButton, {}, empty);
+        QVERIFY(!chart.isZoomed());
+        QCOMPARE(spread(), before);
+    }
+
+    void costLabelsAreReadable() {
+        const QLocale c(QLocale::English, QLocale::UnitedStates);
+        QCOMPARE(AccuracyChart::costLabel(0, c), QString("1"));
+        QCOMPARE(AccuracyChart::costLabel(std::log10(5.0), c), QString("5"));
+        QCOMPARE(AccuracyChart::costLabel(3, c), QString("1,000"));
+        QCOMPARE(AccuracyChart::costLabel(4 + std::log10(2.0), c), QString("20,000"));
+        QCOMPARE(AccuracyChart::costLabel(-2, c), QString("0.01"));
+        QCOMPARE(AccuracyChart::costLabel(6, c), QString::fromUtf8("10\u2076"));
+        QCOMPARE(AccuracyChart::costLabel(7 + std::log10(2.0), c), QString::fromUtf8("2\u00d710\u2077"));
+        QCOMPARE(AccuracyChart::costLabel(-5, c), QString::fromUtf8("10\u207b\u2075"));
+        for (int k = -6; k <= 9; ++k)
+            QVERIFY(!AccuracyChart::costLabel(k, c).contains('e'));
+    }
+
+    void panelFitsANarrowDock() {
+        // Issue 19: in a dock a third of a 1280-pixel window wide, Cancel and Adopt were cut off.
+        AccuracyPanel panel;
+        QVERIFY2(panel.minimumSizeHint().width() <= 380, qPrintable(QString::number(panel.minimumSizeHint().width())));
+        panel.resize(390, 600);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        for (const char* name : {"runStudy", "cancelStudy", "adoptSettings", "studyPreset", "costAxis"}) {
+            QWidget* w = child<QWidget>(panel, name);
+            const QRect inPanel(w->mapTo(&panel, QPoint(0, 0)), w->size());
+            QVERIFY2(panel.rect().contains(inPanel), name);
+        }
     }
 
     void chartGeometryFrontAndPainting() {

@@ -29,12 +29,14 @@
 
 #include "tests/widgets/sweep_fixtures.h"
 #include "tests/widgets/tissue_compare.h"
+#include <QAbstractButton>
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
 #include <QStyle>
@@ -549,6 +551,58 @@ private slots:
         QVERIFY(!finished.first().at(0).toBool());
         QCOMPARE(errors.count(), 1);
         s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    void exportIsConfirmed() {
+        // Issue 19: after an export nothing but a brief status message said it had worked.
+        Studio s;
+        QVERIFY(s.load(Sample::Myoma));
+        s.window.setErrorDialogsEnabled(true);
+        const QString out = m_dir.filePath(QStringLiteral("confirmed-package"));
+        QSignalSpy finished(&s.window, &MainWindow::exportFinished);
+        QVERIFY(s.window.exportPackage(out));
+        QVERIFY(finished.wait(kWaitMs));
+        QVERIFY2(finished.first().at(0).toBool(), qPrintable(finished.first().at(1).toString()));
+        auto* box = s.window.findChild<QMessageBox*>(QStringLiteral("exportConfirmation"));
+        QVERIFY(box);
+        QVERIFY(QTest::qWaitFor([box] { return box->isVisible(); }, 5000));
+        QVERIFY2(box->text().contains(out), qPrintable(box->text()));
+        bool openFolder = false;
+        for (QAbstractButton* b : box->buttons())
+            openFolder = openFolder || b->text().contains(QStringLiteral("folder"), Qt::CaseInsensitive);
+        QVERIFY(openFolder);
+        box->accept();
+        s.window.setErrorDialogsEnabled(false);
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    void smallThings() {
+        Studio s;
+        QVERIFY(s.load());
+        // One piece is "1 piece".
+        const QString summary = s.window.findChild<QLabel*>(QStringLiteral("statusSummary"))->text();
+        QVERIFY2(summary.contains(QStringLiteral("1 piece,")) && !summary.contains(QStringLiteral("pieces")),
+                 qPrintable(summary));
+        // Ctrl+O works from every window of the studio (floating docks too).
+        QAction* open = s.action("openFile");
+        QVERIFY(open);
+        QCOMPARE(open->shortcut(), QKeySequence(QKeySequence::Open));
+        QCOMPARE(open->shortcutContext(), Qt::ApplicationShortcut);
+        // View > Reset camera restores the starting view after the view was turned.
+        VtkViewport* view = s.window.viewport();
+        double start[3], turned[3], reset[3];
+        view->camera()->GetDirectionOfProjection(start);
+        const int y = view->height() / 2;
+        QTest::mousePress(view, Qt::LeftButton, {}, QPoint(view->width() / 3, y));
+        for (int i = 1; i <= 8; ++i)
+            QTest::mouseMove(view, QPoint(view->width() / 3 + 20 * i, y + 5 * i));
+        QTest::mouseRelease(view, Qt::LeftButton, {}, QPoint(view->width() / 3 + 160, y + 40));
+        view->camera()->GetDirectionOfProjection(turned);
+        QVERIFY(std::abs(turned[0] - start[0]) + std::abs(turned[1] - start[1]) + std::abs(turned[2] - start[2]) > 0.1);
+        s.action("resetCamera")->trigger();
+        view->camera()->GetDirectionOfProjection(reset);
+        for (int i = 0; i < 3; ++i)
+            QVERIFY2(std::abs(reset[i] - start[i]) < 1e-9, qPrintable(QString("%1 vs %2").arg(reset[i]).arg(start[i])));
     }
 
     void overlayAndQualityFilterSwitch() {
