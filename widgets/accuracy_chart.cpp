@@ -185,7 +185,9 @@ QPointF AccuracyChart::toPixel(double x, double y, const Ranges& r, const QRectF
     if (!std::isfinite(y))
         y = r.yHi; // no error measured: on the top edge
     const double fx = (x - r.xLo) / (r.xHi - r.xLo);
-    const double fy = (std::clamp(y, r.yLo, r.yHi) - r.yLo) / (r.yHi - r.yLo);
+    // Unzoomed, every point is inside the ranges (clamped for safety); zoomed, points outside
+    // fall outside the plot, where painting clips them and picking ignores them.
+    const double fy = ((m_zoom ? y : std::clamp(y, r.yLo, r.yHi)) - r.yLo) / (r.yHi - r.yLo);
     return {plot.left() + fx * plot.width(), plot.bottom() - fy * plot.height()};
 }
 
@@ -263,9 +265,9 @@ QString AccuracyChart::costLabel(double logValue, const QLocale& locale) {
     const double value = std::pow(10.0, logValue);
     const int decade = static_cast<int>(std::floor(logValue + 1e-9));
     if (decade >= -3 && decade <= 4) {
-        if (value >= 1.0)
+        if (value >= 1.0 && std::abs(value - std::round(value)) < 1e-6 * value)
             return locale.toString(static_cast<qlonglong>(std::llround(value)));
-        return locale.toString(value, 'g', 3);
+        return locale.toString(value, 'g', 4); // below 10^5: never an exponent
     }
     static const char16_t* const digits[] = {u"\u2070", u"\u00b9", u"\u00b2", u"\u00b3", u"\u2074",
                                              u"\u2075", u"\u2076", u"\u2077", u"\u2078", u"\u2079"};
@@ -274,17 +276,22 @@ QString AccuracyChart::costLabel(double logValue, const QLocale& locale) {
         exponent += QString::fromUtf16(digits[c.digitValue()]);
     if (decade < 0)
         exponent.prepend(QChar(0x207B)); // superscript minus
-    const long mantissa = std::lround(value / std::pow(10.0, decade));
+    const double mantissa = value / std::pow(10.0, decade);
     const QString power = QStringLiteral("10") + exponent;
-    return mantissa == 1 ? power : QString::number(mantissa) + QChar(0x00D7) + power;
+    if (std::abs(mantissa - 1.0) < 1e-6)
+        return power;
+    return locale.toString(mantissa, 'g', 3) + QChar(0x00D7) + power;
 }
 
 int AccuracyChart::rowAt(QPointF pixel) const {
     const std::vector<QPointF> drawn = drawnPositions();
     int best = -1;
     double bestDist = kPickRadius;
+    const QRectF visible = plotRect().adjusted(-kMarkerSize, -kMarkerSize, kMarkerSize, kMarkerSize);
     for (int i = 0; i < static_cast<int>(drawn.size()); ++i) {
         const QPointF p = drawn[static_cast<std::size_t>(i)];
+        if (m_zoom && !visible.contains(p))
+            continue; // zoomed out of view
         const double dist = std::hypot(p.x() - pixel.x(), p.y() - pixel.y());
         if (dist <= bestDist && (best < 0 || dist < bestDist)) {
             best = i;
@@ -365,12 +372,20 @@ void AccuracyChart::paintEvent(QPaintEvent*) {
     painter.setPen(QPen(grid, 0, Qt::DotLine));
     std::vector<double> xTicks;
     const bool fine = r.xHi - r.xLo <= 2.5;
-    for (int k = static_cast<int>(std::floor(r.xLo)); k <= static_cast<int>(std::ceil(r.xHi)); ++k)
-        for (double m : fine ? std::vector<double>{1, 2, 5} : std::vector<double>{1}) {
-            const double x = k + std::log10(m);
-            if (x >= r.xLo && x <= r.xHi)
-                xTicks.push_back(x);
-        }
+    if (r.xHi - r.xLo < 1.0) {
+        // Less than a decade (zoomed in): evenly spaced round values.
+        const double lo = std::pow(10.0, r.xLo), hi = std::pow(10.0, r.xHi);
+        const double step = niceStep((hi - lo) / 4);
+        for (double v = step * std::ceil(lo / step); v <= hi; v += step)
+            xTicks.push_back(std::log10(v));
+    } else {
+        for (int k = static_cast<int>(std::floor(r.xLo)); k <= static_cast<int>(std::ceil(r.xHi)); ++k)
+            for (double m : fine ? std::vector<double>{1, 2, 5} : std::vector<double>{1}) {
+                const double x = k + std::log10(m);
+                if (x >= r.xLo && x <= r.xHi)
+                    xTicks.push_back(x);
+            }
+    }
     for (double x : xTicks) {
         const double px = toPixel(x, r.yLo, r, plot).x();
         painter.setPen(QPen(grid, 0, Qt::DotLine));

@@ -341,6 +341,9 @@ private slots:
         QVERIFY2(spread() > 5 * before, qPrintable(QString("%1 -> %2").arg(before).arg(spread())));
         for (int i = 0; i < 3; ++i)
             QVERIFY(chart.plotRect().contains(chart.pointPosition(i)));
+        // The subdivision point, outside the zoom, is neither on the axes nor pickable.
+        QVERIFY(!chart.plotRect().adjusted(-10, -10, 10, 10).contains(chart.pointPosition(3)));
+        QCOMPARE(chart.rowAt(chart.pointPosition(3)), -1);
         QVERIFY(!chart.grab().isNull());
         // A click on empty space does not zoom; a double click shows all again.
         const QPoint empty = (chart.plotRect().topLeft() + QPointF(3, 30)).toPoint();
@@ -361,6 +364,9 @@ private slots:
         QCOMPARE(AccuracyChart::costLabel(6, c), QString::fromUtf8("10\u2076"));
         QCOMPARE(AccuracyChart::costLabel(7 + std::log10(2.0), c), QString::fromUtf8("2\u00d710\u2077"));
         QCOMPARE(AccuracyChart::costLabel(-5, c), QString::fromUtf8("10\u207b\u2075"));
+        // Zoomed-in ticks are not all round.
+        QCOMPARE(AccuracyChart::costLabel(std::log10(2.5), c), QString("2.5"));
+        QCOMPARE(AccuracyChart::costLabel(std::log10(1.25e7), c), QString::fromUtf8("1.25\u00d710\u2077"));
         for (int k = -6; k <= 9; ++k)
             QVERIFY(!AccuracyChart::costLabel(k, c).contains('e'));
     }
