@@ -24,7 +24,7 @@
         <translation>Pareto-Front</translation>
     </message>
     <message>
-        <location line="+207"/>
+        <location line="+214"/>
         <source>%1 on %2</source>
         <translation>%1 auf %2</translation>
     </message>
@@ -67,7 +67,7 @@
         <translation>Schnitt: %1 ms; Simulation: %2 ms pro simulierter Sekunde</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+68"/>
         <source>Cut time (ms, log scale)</source>
         <translation>Schnittzeit (ms, logarithmische Skala)</translation>
     </message>
@@ -271,11 +271,11 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>Edit the end curve; it starts as a copy of the start curve.</source>
-        <translation>Bearbeiten Sie die Endkurve; sie beginnt als Kopie der Startkurve.</translation>
+        <source>Draw the end curve: click, in order, where each point of the start curve ends its path.</source>
+        <translation>Endkurve zeichnen: Klicken Sie der Reihe nach dorthin, wo jeder Punkt der Startkurve seinen Weg beendet.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Record stroke</source>
         <translation>Schnittbewegung aufzeichnen</translation>
     </message>
@@ -326,22 +326,22 @@
     </message>
     <message>
         <location line="+51"/>
-        <location line="+85"/>
+        <location line="+86"/>
         <source>Draw a sweep surface or record a stroke.</source>
         <translation>Zeichnen Sie eine Schnittfläche oder zeichnen Sie eine Schnittbewegung auf.</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-11"/>
         <source>Sweep surface handed on.</source>
         <translation>Schnittfläche übergeben.</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Stroke recorded: %1 poses over %2 s.</source>
         <translation>Schnittbewegung aufgezeichnet: %1 Posen über %2 s.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+19"/>
         <source>The sweep surface is valid: drag points to adjust it, or press Finish.</source>
         <translation>Die Schnittfläche ist gültig: Ziehen Sie Punkte, um sie anzupassen, oder klicken Sie auf „Fertigstellen“.</translation>
     </message>
@@ -1675,7 +1675,32 @@
 <context>
     <name>resect::SweepEditTool</name>
     <message>
-        <location filename="../widgets/sweep_edit_tool.cpp" line="+181"/>
+        <location filename="../widgets/sweep_edit_tool.cpp" line="+100"/>
+        <source>Alt+drag turns the view, Shift+drag pans, the wheel zooms.</source>
+        <translation>Alt+Ziehen dreht die Ansicht, Umschalt+Ziehen verschiebt, das Mausrad zoomt.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Click on the tissue to place the first point of the start curve. %1</source>
+        <translation>Klicken Sie auf das Gewebe, um den ersten Punkt der Startkurve zu setzen. %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Start curve: click to place point 2; drag a point to move it. %1</source>
+        <translation>Startkurve: Klicken Sie, um Punkt 2 zu setzen; ziehen Sie einen Punkt, um ihn zu verschieben. %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start curve: %1 points. Click to add point %2, or press End curve to draw where the tool ends. %3</source>
+        <translation>Startkurve: %1 Punkte. Klicken Sie, um Punkt %2 hinzuzufügen, oder drücken Sie „Endkurve“, um zu zeichnen, wo das Werkzeug endet. %3</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>End curve: click where point %1 of %2 ends its path. %3</source>
+        <translation>Endkurve: Klicken Sie dorthin, wo Punkt %1 von %2 seinen Weg beendet. %3</translation>
+    </message>
+    <message>
+        <location line="+84"/>
         <source>The start curve needs at least two points; it has %1.</source>
         <translation>Die Startkurve braucht mindestens zwei Punkte; sie hat %1.</translation>
     </message>

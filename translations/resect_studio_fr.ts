@@ -24,7 +24,7 @@
         <translation>Front de Pareto</translation>
     </message>
     <message>
-        <location line="+207"/>
+        <location line="+214"/>
         <source>%1 on %2</source>
         <translation>%1 sur %2</translation>
     </message>
@@ -67,7 +67,7 @@
         <translation>Coupe : %1 ms ; simulation : %2 ms par seconde simulée</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+68"/>
         <source>Cut time (ms, log scale)</source>
         <translation>Durée de la coupe (ms, échelle logarithmique)</translation>
     </message>
@@ -271,11 +271,11 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>Edit the end curve; it starts as a copy of the start curve.</source>
-        <translation>Modifiez la courbe de fin ; elle est d&apos;abord une copie de la courbe de départ.</translation>
+        <source>Draw the end curve: click, in order, where each point of the start curve ends its path.</source>
+        <translation>Tracer la courbe de fin : cliquez, dans l&apos;ordre, là où chaque point de la courbe de départ termine son trajet.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Record stroke</source>
         <translation>Enregistrer un geste</translation>
     </message>
@@ -326,22 +326,22 @@
     </message>
     <message>
         <location line="+51"/>
-        <location line="+85"/>
+        <location line="+86"/>
         <source>Draw a sweep surface or record a stroke.</source>
         <translation>Dessinez une surface de balayage ou enregistrez un geste de coupe.</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-11"/>
         <source>Sweep surface handed on.</source>
         <translation>Surface de balayage transmise.</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Stroke recorded: %1 poses over %2 s.</source>
         <translation>Geste enregistré : %1 poses sur %2 s.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+19"/>
         <source>The sweep surface is valid: drag points to adjust it, or press Finish.</source>
         <translation>La surface de balayage est valide : faites glisser des points pour l&apos;ajuster, ou appuyez sur Terminer.</translation>
     </message>
@@ -1675,7 +1675,32 @@
 <context>
     <name>resect::SweepEditTool</name>
     <message>
-        <location filename="../widgets/sweep_edit_tool.cpp" line="+181"/>
+        <location filename="../widgets/sweep_edit_tool.cpp" line="+100"/>
+        <source>Alt+drag turns the view, Shift+drag pans, the wheel zooms.</source>
+        <translation>Alt+glisser fait tourner la vue, Maj+glisser la déplace, la molette zoome.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Click on the tissue to place the first point of the start curve. %1</source>
+        <translation>Cliquez sur le tissu pour placer le premier point de la courbe de départ. %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Start curve: click to place point 2; drag a point to move it. %1</source>
+        <translation>Courbe de départ : cliquez pour placer le point 2 ; faites glisser un point pour le déplacer. %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start curve: %1 points. Click to add point %2, or press End curve to draw where the tool ends. %3</source>
+        <translation>Courbe de départ : %1 points. Cliquez pour ajouter le point %2, ou appuyez sur « Courbe de fin » pour tracer où l&apos;outil termine. %3</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>End curve: click where point %1 of %2 ends its path. %3</source>
+        <translation>Courbe de fin : cliquez là où le point %1 sur %2 termine son trajet. %3</translation>
+    </message>
+    <message>
+        <location line="+84"/>
         <source>The start curve needs at least two points; it has %1.</source>
         <translation>La courbe de départ nécessite au moins deux points ; elle en a %1.</translation>
     </message>

@@ -47,7 +47,8 @@ AuthoringPanel::AuthoringPanel(VtkViewport* viewport, QWidget* parent)
                         this);
     m_draw->setCheckable(true);
     m_endCurve = makeButton(tr("End curve"), "endCurveButton",
-                            tr("Edit the end curve; it starts as a copy of the start curve."),
+                            tr("Draw the end curve: click, in order, where each point of the "
+                               "start curve ends its path."),
                             this);
     m_record = makeButton(tr("Record stroke"), "recordStrokeButton",
                           tr("Drag the electrode across the view with the left button."), this);
@@ -194,6 +195,7 @@ void AuthoringPanel::finish() {
 }
 
 void AuthoringPanel::clearAll() {
+    m_draw->setChecked(false); // clearing ends drawing: the view navigates again
     m_editor->clear();
     m_recorder->clear();
     m_player->stop();
@@ -236,8 +238,13 @@ void AuthoringPanel::updateSweepStatus() {
     m_finish->setEnabled(valid);
     if (!m_draw->isChecked())
         return;
+    // What the next click does while a curve is being placed; the editor's problem only
+    // once both curves have their points and still do not make a sweep.
+    const QString next = m_editor->nextClickHint();
     if (valid)
         setStatus(tr("The sweep surface is valid: drag points to adjust it, or press Finish."));
+    else if (!next.isEmpty())
+        setStatus(next);
     else
         setStatus(m_editor->problem());
 }

@@ -28,6 +28,9 @@ HandleActor::HandleActor()
     property->RenderPointsAsSpheresOn();
     property->SetAmbient(0.3);
     property->SetSpecular(0.4);
+    // Drawn in front of the tissue they sit on: a point placed on the surface would otherwise
+    // be half buried, and one just behind it hidden (depth offset towards the camera).
+    m_mapper->SetRelativeCoincidentTopologyPointOffsetParameter(kDepthOffsetUnits);
     m_actor->SetVisibility(false);
 }
 

@@ -35,6 +35,9 @@ public:
     int count() const;
 
     static constexpr double kSizePixels = 12.0;
+    /// Depth offset of the handles towards the camera, in depth-buffer units (VTK's
+    /// coincident-topology offset): enough to draw them over the surface they lie on.
+    static constexpr double kDepthOffsetUnits = -66000.0;
 
 private:
     vtkSmartPointer<vtkPolyData> m_polyData;

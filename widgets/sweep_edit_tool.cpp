@@ -90,12 +90,28 @@ void SweepEditTool::setActiveCurve(Curve c) {
     emit activeCurveChanged(c);
 }
 
-bool SweepEditTool::beginEndCurve() {
+void SweepEditTool::beginEndCurve() {
     setActiveCurve(Curve::End);
-    if (!curve(Curve::End).empty() || curve(Curve::Start).size() < 2)
-        return false;
-    copyStartToEnd(defaultEndOffset());
-    return true;
+}
+
+QString SweepEditTool::nextClickHint() const {
+    const int starts = static_cast<int>(curve(Curve::Start).size());
+    const int ends = static_cast<int>(curve(Curve::End).size());
+    const QString turn = tr("Alt+drag turns the view, Shift+drag pans, the wheel zooms.");
+    if (m_active == Curve::Start) {
+        if (starts == 0)
+            return tr("Click on the tissue to place the first point of the start curve. %1").arg(turn);
+        if (starts == 1)
+            return tr("Start curve: click to place point 2; drag a point to move it. %1").arg(turn);
+        return tr("Start curve: %1 points. Click to add point %2, or press End curve to draw where "
+                  "the tool ends. %3")
+            .arg(starts)
+            .arg(starts + 1)
+            .arg(turn);
+    }
+    if (ends < starts)
+        return tr("End curve: click where point %1 of %2 ends its path. %3").arg(ends + 1).arg(starts).arg(turn);
+    return {};
 }
 
 void SweepEditTool::copyStartToEnd(const Vec3& offset) {

@@ -9,12 +9,12 @@
 //     set (setPickSurface: the tissue), otherwise on the view plane through the active
 //     curve's last point (for a curve's first point: through the other curve's first point,
 //     or the camera's focal point when both are empty).
-//  2. End curve: beginEndCurve() (the "End curve" button) makes the end curve active; if it
-//     is empty and the start curve has >= 2 points, it starts as a copy of the start curve
-//     moved down the view by a fifth of the view's height (defaultEndOffset()), so it has
-//     the right number of points and the author only drags it into place. Points can also be
-//     clicked in one by one, as for the start curve (setActiveCurve(Curve::End) on an empty
-//     end curve).
+//  2. End curve: beginEndCurve() (the "End curve" button) makes the end curve active, and
+//     its points are clicked in one by one, as for the start curve: point k is where the
+//     tool's point k ends its path. (An automatic copy of the start curve, shifted down the
+//     view, used to appear here: on a tissue its handles ended up hidden inside it and the
+//     author had to find and drag every one. copyStartToEnd() still makes such a copy for
+//     callers that want it.)
 //  3. Any handle (drawn as a sphere of HandleActor::kSizePixels: start curve green, end
 //     curve orange, the selected one white) can be dragged: a left press within
 //     kHandlePickPixels of it grabs it and it moves in the view plane through its position,
@@ -83,10 +83,11 @@ public:
 
     Curve activeCurve() const { return m_active; }
     void setActiveCurve(Curve c);
-    /// Makes the end curve active; if it is empty and the start curve has >= 2 points, fills
-    /// it with the start curve moved by defaultEndOffset() (emits sweepChanged()). Returns
-    /// true if it copied.
-    bool beginEndCurve();
+    /// Makes the end curve active (its points are then clicked in, see above).
+    void beginEndCurve();
+    /// What the next left click on empty space does, for a status line: which point of
+    /// which curve it places (with the modifier that turns the view instead).
+    QString nextClickHint() const;
     /// Replaces the end curve by the start curve moved by `offset` (mm). Emits sweepChanged().
     void copyStartToEnd(const Vec3& offset);
     /// A fifth of the view's height downwards in the view, at the depth of the start curve's

@@ -94,8 +94,10 @@ private slots:
         QVERIFY(scene.editor.sweepActor().surface()->GetNumberOfCells() == 0);
         QCOMPARE(scene.editor.sweepActor().curves()->GetNumberOfCells(), vtkIdType(2));
 
-        // The end curve starts as a shifted copy of the start curve.
-        QVERIFY(scene.editor.beginEndCurve());
+        // The end curve is made active; copyStartToEnd fills it with a shifted copy.
+        scene.editor.beginEndCurve();
+        QVERIFY(scene.editor.curve(Curve::End).empty());
+        scene.editor.copyStartToEnd(scene.editor.defaultEndOffset());
         QCOMPARE(scene.editor.activeCurve(), Curve::End);
         QCOMPARE(activeChanged.count(), 1);
         QCOMPARE(changed.count(), 4);
@@ -283,15 +285,27 @@ private slots:
         QSignalSpy sweeps(&panel, &AuthoringPanel::sweepFinished);
         QSignalSpy strokes(&panel, &AuthoringPanel::strokeRecorded);
 
-        // Draw: two start points, the end curve as a copy, finish.
+        // Draw: two start points, then the end curve point by point, finish. The status line
+        // says what the next click does (and how to turn the view), never talking about the
+        // end curve while the start curve is placed.
         draw->click();
         QCOMPARE(view.tool(), static_cast<ViewportTool*>(&panel.sweepEditor()));
+        QVERIFY2(status->text().contains("first point of the start curve"), qPrintable(status->text()));
+        QVERIFY2(status->text().contains("Alt+drag turns the view"), qPrintable(status->text()));
         click(&view, QPoint(200, 240));
         QVERIFY(!finish->isEnabled());
-        QVERIFY(!status->text().isEmpty());
+        QVERIFY2(status->text().contains("point 2") && !status->text().contains("end curve"), qPrintable(status->text()));
         click(&view, QPoint(400, 240));
+        QVERIFY2(status->text().contains("End curve") && status->text().contains("point 3"), qPrintable(status->text()));
         endCurve->click();
+        QVERIFY(panel.sweepEditor().curve(SweepEditTool::Curve::End).empty()); // no hidden copy
+        QVERIFY(!finish->isEnabled());
+        QVERIFY2(status->text().contains("point 1 of 2"), qPrintable(status->text()));
+        click(&view, QPoint(200, 320));
+        QVERIFY2(status->text().contains("point 2 of 2"), qPrintable(status->text()));
+        click(&view, QPoint(400, 320));
         QVERIFY(finish->isEnabled());
+        QVERIFY2(status->text().contains("valid"), qPrintable(status->text()));
         finish->click();
         QCOMPARE(sweeps.count(), 1);
         const SweepSpec spec = qvariant_cast<SweepSpec>(sweeps.at(0).at(0));
@@ -321,6 +335,16 @@ private slots:
         clear->click();
         QVERIFY(!play->isEnabled());
         QVERIFY(!panel.strokePlayer().isPlaying());
+
+        // Clear while drawing ends drawing (it left "Draw sweep" checked and the view a
+        // drawing tool).
+        draw->click();
+        click(&view, QPoint(200, 240));
+        QVERIFY(draw->isChecked());
+        clear->click();
+        QVERIFY(!draw->isChecked());
+        QVERIFY(view.tool() == nullptr);
+        QVERIFY(panel.sweepEditor().curve(SweepEditTool::Curve::Start).empty());
     }
 
     void sweepActorDrawsWhatItCan() {
