@@ -782,7 +782,7 @@
 <context>
     <name>resect::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+300"/>
+        <location filename="../app/studio/main_window.cpp" line="+312"/>
         <location line="+11"/>
         <location line="+169"/>
         <location line="+59"/>
@@ -795,7 +795,12 @@
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-20"/>
+        <source>Simulation paused while a cut is previewed: apply or discard the cut, then play.</source>
+        <translation>Simulation pausiert, solange ein Schnitt in der Vorschau ist: Wenden Sie den Schnitt an oder verwerfen Sie ihn, dann abspielen.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>&amp;New from sample</source>
         <translation>&amp;Neu aus Beispiel</translation>
     </message>
@@ -1126,7 +1131,7 @@
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="-418"/>
+        <location line="-430"/>
         <source>The tissue could not be loaded.</source>
         <translation>Das Gewebe konnte nicht geladen werden.</translation>
     </message>
@@ -1141,7 +1146,7 @@
         <translation>Die letzte Änderung wurde rückgängig gemacht: %1</translation>
     </message>
     <message>
-        <location line="+230"/>
+        <location line="+242"/>
         <source>Could not open %1.</source>
         <translation>%1 konnte nicht geöffnet werden.</translation>
     </message>

@@ -155,6 +155,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_cutPanel, &CutPanel::applyFailed, this,
             [this](const QString& message) { statusBar()->showMessage(message, 10000); });
     connect(m_preview, &CutPreview::changed, this, &MainWindow::updateApplyAction);
+    // No simulation behind a pending cut: the view shows the preview at rest, and a
+    // simulation running on would be hidden behind it (issue 19). Playing waits until the
+    // cut is applied or discarded.
+    const auto holdSimulation = [this] {
+        if (m_preview->hasPending() && m_simulation->isPlaying()) {
+            m_simulation->pause();
+            statusBar()->showMessage(
+                tr("Simulation paused while a cut is previewed: apply or discard the cut, then play."), 10000);
+        }
+    };
+    connect(m_preview, &CutPreview::changed, this, holdSimulation);
+    connect(m_simulation, &SimulationController::playingChanged, this, holdSimulation);
     connect(m_session, &TissueSession::busyChanged, this, &MainWindow::updateApplyAction);
     updateApplyAction();
 

@@ -553,6 +553,33 @@ private slots:
         s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
     }
 
+    void aPendingCutHoldsTheSimulation() {
+        // Issue 19: a simulation kept running hidden behind a static cut preview.
+        Studio s;
+        QVERIFY(s.load(Sample::Myoma));
+        SimulationPanel* panel = s.window.simulationPanel();
+        QCheckBox* gravity = panel->effectBox("gravity");
+        QVERIFY(gravity);
+        if (!gravity->isChecked())
+            gravity->click();
+        QVERIFY(s.window.simulation().isReady());
+        s.window.simulation().play();
+        QVERIFY(s.window.simulation().isPlaying());
+        s.window.cutPreview().setPendingSweep(planeSweep(s.window.session().base()->mesh(), 0.5));
+        QVERIFY(!s.window.simulation().isPlaying());
+        QVERIFY2(s.window.statusBar()->currentMessage().contains(QStringLiteral("paused")),
+                 qPrintable(s.window.statusBar()->currentMessage()));
+        // Playing again waits for the cut.
+        s.window.simulation().play();
+        QVERIFY(!s.window.simulation().isPlaying());
+        QVERIFY(s.idle());
+        s.window.cutPreview().discard();
+        s.window.simulation().play();
+        QVERIFY(s.window.simulation().isPlaying());
+        s.window.simulation().pause();
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
     void exportIsConfirmed() {
         // Issue 19: after an export nothing but a brief status message said it had worked.
         Studio s;
