@@ -247,6 +247,13 @@ struct EffectSpec {
     bool flag(const char* key, bool fallback) const;
 };
 
+/// Ranges of the effects' parameters (the table above; validation and the studio's editors).
+struct EffectLimits {
+    static constexpr double kMaxAcceleration = 1e9;   ///< gravity: |component| in mm/s^2
+    static constexpr double kMaxToolRadius = 1e3;     ///< tool-contact: radius in (0, this] mm
+    static constexpr double kMaxDampingCoefficient = 1e6; ///< damping: coefficient in (0, this] 1/s
+};
+
 /// The effect names a scenario may declare, in the order they are listed above.
 const std::vector<std::string>& knownEffectNames();
 

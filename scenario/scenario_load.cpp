@@ -700,14 +700,15 @@ void checkEffectParameters(Context& c, const std::string& name, const QJsonObjec
     } else if (name == "gravity") {
         double a[3];
         if (f.has("acceleration"))
-            readNumbers(c, f.take("acceleration"), f.at("acceleration"), 3, {-1e9, 1e9},
+            readNumbers(c, f.take("acceleration"), f.at("acceleration"), 3,
+                        {-EffectLimits::kMaxAcceleration, EffectLimits::kMaxAcceleration},
                         "[x, y, z] in mm/s^2", a);
     } else if (name == "tool-contact") {
         double r;
-        f.number("radius", r, {0, 1e3, true}, true);
+        f.number("radius", r, {0, EffectLimits::kMaxToolRadius, true}, true);
     } else if (name == "damping") {
         double d;
-        f.number("coefficient", d, {0, 1e6, true});
+        f.number("coefficient", d, {0, EffectLimits::kMaxDampingCoefficient, true});
     }
     f.unknown();
 }

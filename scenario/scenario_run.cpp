@@ -1,6 +1,8 @@
 #include "scenario/scenario_run.h"
 
 #include "core/mesh/masses.h"
+#include "core/sim/effect_registry.h"
+#include "core/tissue/tissue.h"
 #include "scenario/anatomy.h"
 #include "scenario/mesh_io.h"
 #include "scenario/scenario_sweeps.h"
@@ -93,12 +95,7 @@ Status planLoadedTissue(const Scenario& scenario, const TissueSpec& tissue, TetM
 
     // Anchors: the nodes in the tissue's fixed regions (held by the `fixed` effect, and what
     // tells anchored pieces from resected ones).
-    for (int n = 0; n < plan.mesh.nodeCount(); ++n)
-        for (const FixedRegion& r : tissue.fixedRegions)
-            if (r.contains(plan.mesh.ref(n))) {
-                plan.anchors.nodes.push_back(n);
-                break;
-            }
+    plan.anchors = regionAnchors(tissue, plan.mesh);
 
     plan.cut = toCutOptions(scenario.cut, tissue.material);
     for (const EffectSpec& e : scenario.effects) {
@@ -134,6 +131,35 @@ Status planLoadedTissue(const Scenario& scenario, const TissueSpec& tissue, TetM
     plan.effectSettings.threads = 1;
     plan.duration = scenario.simulation.duration;
     (void)parseResectedPieces(scenario.simulation.resectedPieces, plan.resected);  // validated when read
+    return Status::success();
+}
+
+FixedSelection regionAnchors(const TissueSpec& tissue, const TetMesh& mesh) {
+    FixedSelection anchors;
+    for (int n = 0; n < mesh.nodeCount(); ++n)
+        for (const FixedRegion& r : tissue.fixedRegions)
+            if (r.contains(mesh.ref(n))) {
+                anchors.nodes.push_back(n);
+                break;
+            }
+    return anchors;
+}
+
+Status checkSimulation(const Scenario& scenario, const TissueSpec& spec, const Tissue& tissue) {
+    if (tissue.empty())
+        return Status::error("tissue '" + spec.name + "': no tets to simulate");
+    ReplayPlan plan;
+    if (Status s = planLoadedTissue(scenario, spec, tissue.mesh(), {}, plan); !s.ok())
+        return s;
+    // As Tissue::startSimulation adds them: the fixed effect holds the tissue's anchors.
+    EffectSettings settings = plan.effectSettings;
+    settings.fixed = tissue.anchors().selection();
+    const EffectRegistry registry = EffectRegistry::withBuiltins();
+    for (const std::string& name : plan.effects) {
+        std::unique_ptr<Effect> effect;
+        if (Status s = registry.create(name, tissue.mesh(), tissue.material(), settings, effect); !s.ok())
+            return Status::error("effect '" + name + "': " + s.message());
+    }
     return Status::success();
 }
 

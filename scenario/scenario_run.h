@@ -52,6 +52,19 @@ Status loadTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh& m
 Status planLoadedTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh mesh, TriangleSurface surface,
                         ReplayPlan& plan);
 
+/// The nodes of `mesh` whose reference position lies in one of the tissue's fixed regions
+/// (bounds included), sorted: the anchors replay gives the tissue (no box: nodes a later cut
+/// adds are anchored only as copies of anchored ones).
+FixedSelection regionAnchors(const TissueSpec& tissue, const TetMesh& mesh);
+
+/// What starting replay's simulation of `scenario` on `tissue` (the first tissue's spec
+/// `spec`, loaded and anchored: an uncut Tissue as makeTissue makes it) would refuse: the plan
+/// (the fixed effect holding no node) and every declared effect's parameters on the tissue
+/// (EffectRegistry, with the tissue's anchors as the fixed effect's). Errors are those of
+/// planLoadedTissue and "effect 'NAME': ...", as Tissue::startSimulation words them. Cost: a
+/// copy of the mesh and the construction of the effects (no integrator, no step).
+Status checkSimulation(const Scenario& scenario, const TissueSpec& spec, const Tissue& tissue);
+
 /// Replays every tissue and evaluates the expectations. Progress covers all tissues.
 Status runScenario(const Scenario& scenario, ScenarioRun& out, const ReplayProgress& progress = {});
 

@@ -349,7 +349,7 @@
 <context>
     <name>resect::CutPanel</name>
     <message>
-        <location filename="../widgets/cut_panel.cpp" line="+37"/>
+        <location filename="../widgets/cut_panel.cpp" line="+38"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
@@ -479,7 +479,18 @@
         <translation>Vorschau</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+16"/>
+        <location line="+260"/>
+        <source>Inspect the worst tet</source>
+        <translation>Schlechtesten Tetraeder prüfen</translation>
+    </message>
+    <message>
+        <location line="-258"/>
+        <source>Shows the tet that limits the time step most in the quality dock&apos;s tet inspector; click again for the next</source>
+        <translation>Zeigt den Tetraeder, der den Zeitschritt am stärksten begrenzt, im Tetraeder-Inspektor des Qualitätsfensters; erneut klicken für den nächsten</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Tets</source>
         <translation>Tetraeder</translation>
     </message>
@@ -594,7 +605,7 @@
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+76"/>
         <source>The last edit was undone: %1</source>
         <translation>Die letzte Änderung wurde rückgängig gemacht: %1</translation>
     </message>
@@ -624,7 +635,7 @@
         <translation>Vorschau des ausstehenden Schnitts (noch nicht angewendet).</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>%1 (%2 refused)</source>
         <translation>%1 (%2 abgelehnt)</translation>
     </message>
@@ -634,11 +645,36 @@
         <source>%1 / %2 / %3</source>
         <translation>%1 / %2 / %3</translation>
     </message>
+    <message>
+        <location line="+28"/>
+        <source>This cut makes the stable time step %1 times smaller (%2 s → %3 s): an explicit simulation needs that many more steps, and the tets that cause it are tiny or flat.</source>
+        <translation>Dieser Schnitt macht den stabilen Zeitschritt %1-mal kleiner (%2 s → %3 s): Eine explizite Simulation braucht entsprechend mehr Schritte, und die verursachenden Tetraeder sind winzig oder flach.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Snapping refused every cut node (%1 refused): the cut nodes stay where the sweep crossed the edges, as with subdivision, which leaves small and flat tets.</source>
+        <translation>Das Einrasten hat jeden Schnittknoten abgelehnt (%1 abgelehnt): Die Schnittknoten bleiben, wo die Schnittfläche die Kanten kreuzt, wie bei der Unterteilung, was kleine und flache Tetraeder hinterlässt.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Tets that limit the time step, worst first: %1.</source>
+        <translation>Tetraeder, die den Zeitschritt begrenzen, schlechtester zuerst: %1.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Warning: %1</source>
+        <translation>Warnung: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Inspect the next (%1 of %2)</source>
+        <translation>Den nächsten prüfen (%1 von %2)</translation>
+    </message>
 </context>
 <context>
     <name>resect::CutPreview</name>
     <message>
-        <location filename="../widgets/cut_preview.cpp" line="+79"/>
+        <location filename="../widgets/cut_preview.cpp" line="+82"/>
         <source>There is no cut to apply: draw a sweep or record a stroke first.</source>
         <translation>Es gibt keinen Schnitt zum Anwenden: Zeichnen Sie zuerst eine Schnittfläche oder zeichnen Sie eine Schnittbewegung auf.</translation>
     </message>
@@ -664,11 +700,222 @@
     </message>
 </context>
 <context>
+    <name>resect::DisplayToolBar</name>
+    <message>
+        <location filename="../widgets/display_toolbar.cpp" line="+29"/>
+        <source>Display</source>
+        <translation>Darstellung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Display</source>
+        <translation>&amp;Darstellung</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Quality</source>
+        <translation>Qualität</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Colour the tets by the quality overlay (Quality dock)</source>
+        <translation>Tetraeder nach der Qualitätseinfärbung färben (Qualitätsfenster)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pieces</source>
+        <translation>Teile</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Colour every piece the cuts made, resected chips included, in its own colour</source>
+        <translation>Jedes Teil, das die Schnitte erzeugt haben, resezierte Späne eingeschlossen, in eigener Farbe färben</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cut faces</source>
+        <translation>Schnittflächen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Draw the faces the cuts made in their own colour (and texture on the surface)</source>
+        <translation>Die von den Schnitten erzeugten Flächen in eigener Farbe zeichnen (und mit Textur auf der Oberfläche)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Last cut</source>
+        <translation>Letzter Schnitt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Outline the tets the last cut produced or changed</source>
+        <translation>Die Tetraeder umranden, die der letzte Schnitt erzeugt oder verändert hat</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>How the pieces a cut took off the anchored tissue are drawn</source>
+        <translation>Wie die Teile gezeichnet werden, die ein Schnitt vom fixierten Gewebe abgetrennt hat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show resected pieces</source>
+        <translation>Resezierte Teile zeigen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Dim resected pieces</source>
+        <translation>Resezierte Teile abblenden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hide resected pieces</source>
+        <translation>Resezierte Teile ausblenden</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Shown</source>
+        <translation>Gezeigt</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Dimmed</source>
+        <translation>Abgeblendet</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Hidden</source>
+        <translation>Ausgeblendet</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Move the pieces apart from the tissue&apos;s centre (display only: the tissue is not changed)</source>
+        <translation>Die Teile vom Mittelpunkt des Gewebes auseinanderrücken (nur Darstellung: das Gewebe bleibt unverändert)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Explode pieces</source>
+        <translation>Teile auseinanderziehen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Colour:</source>
+        <translation>Farbe:</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Resected:</source>
+        <translation>Reseziert:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Explode:</source>
+        <translation>Auseinander:</translation>
+    </message>
+</context>
+<context>
     <name>resect::DocumentOpener</name>
     <message>
         <location filename="../widgets/document_opener.cpp" line="+57"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>resect::EffectParameterEditor</name>
+    <message>
+        <location filename="../widgets/effect_parameter_editor.cpp" line="+56"/>
+        <source>Springs</source>
+        <translation>Federn</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Springs on the edges (distance term)</source>
+        <translation>Federn auf den Kanten (Abstandsterm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Volume</source>
+        <translation>Volumen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Volume preservation of every tet</source>
+        <translation>Volumenerhaltung jedes Tetraeders</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Area</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Area preservation of the boundary triangles</source>
+        <translation>Flächenerhaltung der Randdreiecke</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>x </source>
+        <translation>x </translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>y </source>
+        <translation>y </translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>z </source>
+        <translation>z </translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> m/s²</source>
+        <translation> m/s²</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The length of the acceleration; its direction is kept</source>
+        <translation>Der Betrag der Beschleunigung; ihre Richtung bleibt erhalten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Magnitude</source>
+        <translation>Betrag</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Radius of the loop&apos;s wire: surface nodes closer to the tool&apos;s curve are pushed out</source>
+        <translation>Radius des Schlingendrahts: Oberflächenknoten, die der Werkzeugkurve näher sind, werden hinausgedrückt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wire radius</source>
+        <translation>Drahtradius</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source> 1/s</source>
+        <translation> 1/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mass-proportional damping f = -c m v: kinetic energy decays with the time constant 1/(2c)</source>
+        <translation>Massenproportionale Dämpfung f = -c m v: Die kinetische Energie klingt mit der Zeitkonstante 1/(2c) ab</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Coefficient</source>
+        <translation>Koeffizient</translation>
     </message>
 </context>
 <context>
@@ -761,6 +1008,84 @@
     </message>
 </context>
 <context>
+    <name>resect::FixedRegionEditor</name>
+    <message>
+        <location filename="../widgets/fixed_region_editor.cpp" line="+35"/>
+        <source>Add base box</source>
+        <translation>Basisquader hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A box around the bottom %1 % of the tissue&apos;s height</source>
+        <translation>Ein Quader um die unteren %1 % der Gewebehöhe</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Place in view</source>
+        <translation>In der Ansicht platzieren</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Draws the boxes in the view: drag a face&apos;s handle to move that face (red x, green y, blue z); drag elsewhere to turn the view</source>
+        <translation>Zeichnet die Quader in der Ansicht: Ziehen Sie den Griff einer Seite, um diese Seite zu verschieben (rot x, grün y, blau z); anderswo ziehen dreht die Ansicht</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>Box %1 (mm)</source>
+        <translation>Quader %1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>max</source>
+        <translation>max</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>A box can be added once the tissue is loaded.</source>
+        <translation>Ein Quader kann hinzugefügt werden, sobald das Gewebe geladen ist.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>1 node of the uncut tissue</source>
+        <translation>1 Knoten des ungeschnittenen Gewebes</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 nodes of the uncut tissue</source>
+        <translation>%1 Knoten des ungeschnittenen Gewebes</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Anchored nodes: not derived yet</source>
+        <translation>Fixierte Knoten: noch nicht ermittelt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No fixed region: nothing is anchored.</source>
+        <translation>Kein fixierter Bereich: nichts ist verankert.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>1 node anchored</source>
+        <translation>1 Knoten verankert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 nodes anchored</source>
+        <translation>%1 Knoten verankert</translation>
+    </message>
+</context>
+<context>
     <name>resect::Language</name>
     <message>
         <location filename="../widgets/language.cpp" line="+54"/>
@@ -782,7 +1107,7 @@
 <context>
     <name>resect::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+312"/>
+        <location filename="../app/studio/main_window.cpp" line="+336"/>
         <location line="+11"/>
         <location line="+169"/>
         <location line="+59"/>
@@ -790,7 +1115,7 @@
         <translation>Resect Studio</translation>
     </message>
     <message>
-        <location line="-366"/>
+        <location line="-372"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -920,7 +1245,12 @@
         <translation>Hochaufgelöste &amp;Oberfläche anzeigen</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
+        <source>Display &amp;toolbar</source>
+        <translation>Darstellungs-&amp;Werkzeugleiste</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>&amp;Language</source>
         <translation>S&amp;prache</translation>
     </message>
@@ -1131,7 +1461,7 @@
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="-430"/>
+        <location line="-451"/>
         <source>The tissue could not be loaded.</source>
         <translation>Das Gewebe konnte nicht geladen werden.</translation>
     </message>
@@ -1146,7 +1476,7 @@
         <translation>Die letzte Änderung wurde rückgängig gemacht: %1</translation>
     </message>
     <message>
-        <location line="+242"/>
+        <location line="+263"/>
         <source>Could not open %1.</source>
         <translation>%1 konnte nicht geöffnet werden.</translation>
     </message>
@@ -1414,7 +1744,7 @@
 <context>
     <name>resect::ScenarioCommand</name>
     <message>
-        <location filename="../widgets/scenario_commands.cpp" line="+81"/>
+        <location filename="../widgets/scenario_commands.cpp" line="+83"/>
         <source>Change cut settings</source>
         <translation>Schnitteinstellungen ändern</translation>
     </message>
@@ -1449,7 +1779,17 @@
         <translation>Effekt ausschalten</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+50"/>
+        <source>Change effect parameters</source>
+        <translation>Effektparameter ändern</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>Change fixed regions</source>
+        <translation>Fixierte Bereiche ändern</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>Change title</source>
         <translation>Titel ändern</translation>
     </message>
@@ -1467,7 +1807,7 @@
         <translation>unbekanntes Beispiel „%1“ (bekannt: %2)</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+47"/>
         <source>New %1 scenario</source>
         <translation>Neues Szenario %1</translation>
     </message>
@@ -1477,7 +1817,7 @@
         <translation>%1: Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+53"/>
         <source>the document has no file name yet (use Save As)</source>
         <translation>das Dokument hat noch keinen Dateinamen (Speichern unter verwenden)</translation>
     </message>
@@ -1496,6 +1836,16 @@
         <source>there is no autosave to recover</source>
         <translation>es gibt keine automatische Sicherung zum Wiederherstellen</translation>
     </message>
+    <message>
+        <location line="+248"/>
+        <source>Remove the last fixed region</source>
+        <translation>Den letzten fixierten Bereich entfernen</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Fix a region</source>
+        <translation>Einen Bereich fixieren</translation>
+    </message>
 </context>
 <context>
     <name>resect::SimulationController</name>
@@ -1513,7 +1863,7 @@
 <context>
     <name>resect::SimulationPanel</name>
     <message>
-        <location filename="../widgets/simulation_panel.cpp" line="+24"/>
+        <location filename="../widgets/simulation_panel.cpp" line="+27"/>
         <source>Deformation (mass-spring)</source>
         <translation>Verformung (Masse-Feder)</translation>
     </message>
@@ -1538,13 +1888,13 @@
         <translation>Dämpfung</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <location line="+84"/>
+        <location line="+15"/>
+        <location line="+157"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-82"/>
+        <location line="-155"/>
         <source>Step</source>
         <translation>Schritt</translation>
     </message>
@@ -1554,12 +1904,12 @@
         <translation>Zurücksetzen</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+15"/>
         <source>Effects in the scenario</source>
         <translation>Effekte im Szenario</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+36"/>
         <source>Cost</source>
         <translation>Aufwand</translation>
     </message>
@@ -1584,7 +1934,17 @@
         <translation>Echtzeit</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+27"/>
+        <source>The last edit was undone: %1</source>
+        <translation>Die letzte Bearbeitung wurde rückgängig gemacht: %1</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Fixed regions: the tissue is not loaded yet, so its base cannot be anchored. Try again once it is shown.</source>
+        <translation>Fixierte Bereiche: Das Gewebe ist noch nicht geladen, daher kann seine Basis nicht verankert werden. Versuchen Sie es erneut, sobald es angezeigt wird.</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -1796,7 +2156,7 @@
 <context>
     <name>resect::TissueSession</name>
     <message>
-        <location filename="../widgets/tissue_session.cpp" line="+103"/>
+        <location filename="../widgets/tissue_session.cpp" line="+118"/>
         <source>There is no tissue to save.</source>
         <translation>Es gibt kein Gewebe zum Speichern.</translation>
     </message>
@@ -1817,12 +2177,12 @@
     </message>
     <message>
         <location line="+66"/>
-        <location line="+320"/>
+        <location line="+355"/>
         <source>Opening was cancelled.</source>
         <translation>Das Öffnen wurde abgebrochen.</translation>
     </message>
     <message>
-        <location line="-227"/>
+        <location line="-262"/>
         <source>Internal error: %1</source>
         <translation>Interner Fehler: %1</translation>
     </message>
@@ -1837,12 +2197,12 @@
         <translation>das Szenario hat kein Gewebe</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+90"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+120"/>
         <source>Checking the surface</source>
         <translation>Oberfläche wird geprüft</translation>
     </message>
@@ -1880,7 +2240,7 @@
 <context>
     <name>resect::VtkViewport</name>
     <message>
-        <location filename="../widgets/vtk_viewport.cpp" line="+103"/>
+        <location filename="../widgets/vtk_viewport.cpp" line="+109"/>
         <source>3-D view unavailable: %1.</source>
         <translation>3-D-Ansicht nicht verfügbar: %1.</translation>
     </message>

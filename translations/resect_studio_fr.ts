@@ -349,7 +349,7 @@
 <context>
     <name>resect::CutPanel</name>
     <message>
-        <location filename="../widgets/cut_panel.cpp" line="+37"/>
+        <location filename="../widgets/cut_panel.cpp" line="+38"/>
         <source>%1 → %2</source>
         <translation>%1 → %2</translation>
     </message>
@@ -479,7 +479,18 @@
         <translation>Aperçu</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+16"/>
+        <location line="+260"/>
+        <source>Inspect the worst tet</source>
+        <translation>Inspecter le pire tétraèdre</translation>
+    </message>
+    <message>
+        <location line="-258"/>
+        <source>Shows the tet that limits the time step most in the quality dock&apos;s tet inspector; click again for the next</source>
+        <translation>Affiche le tétraèdre qui limite le plus le pas de temps dans l&apos;inspecteur du panneau Qualité ; cliquez à nouveau pour le suivant</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Tets</source>
         <translation>Tétraèdres</translation>
     </message>
@@ -594,7 +605,7 @@
         <translation>A&amp;bandonner</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+76"/>
         <source>The last edit was undone: %1</source>
         <translation>La dernière modification a été annulée : %1</translation>
     </message>
@@ -624,7 +635,7 @@
         <translation>Aperçu de la coupe en attente (pas encore appliquée).</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>%1 (%2 refused)</source>
         <translation>%1 (%2 refusés)</translation>
     </message>
@@ -634,11 +645,36 @@
         <source>%1 / %2 / %3</source>
         <translation>%1 / %2 / %3</translation>
     </message>
+    <message>
+        <location line="+28"/>
+        <source>This cut makes the stable time step %1 times smaller (%2 s → %3 s): an explicit simulation needs that many more steps, and the tets that cause it are tiny or flat.</source>
+        <translation>Cette coupe rend le pas de temps stable %1 fois plus petit (%2 s → %3 s) : une simulation explicite demande d&apos;autant plus de pas, et les tétraèdres en cause sont minuscules ou plats.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Snapping refused every cut node (%1 refused): the cut nodes stay where the sweep crossed the edges, as with subdivision, which leaves small and flat tets.</source>
+        <translation>L&apos;accrochage a refusé chaque nœud de coupe (%1 refusés) : les nœuds de coupe restent là où la surface de coupe croise les arêtes, comme avec la subdivision, ce qui laisse des tétraèdres petits et plats.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Tets that limit the time step, worst first: %1.</source>
+        <translation>Tétraèdres qui limitent le pas de temps, le pire d&apos;abord : %1.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Warning: %1</source>
+        <translation>Attention : %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Inspect the next (%1 of %2)</source>
+        <translation>Inspecter le suivant (%1 sur %2)</translation>
+    </message>
 </context>
 <context>
     <name>resect::CutPreview</name>
     <message>
-        <location filename="../widgets/cut_preview.cpp" line="+79"/>
+        <location filename="../widgets/cut_preview.cpp" line="+82"/>
         <source>There is no cut to apply: draw a sweep or record a stroke first.</source>
         <translation>Il n&apos;y a aucune coupe à appliquer : dessinez d&apos;abord une surface de balayage ou enregistrez un geste de coupe.</translation>
     </message>
@@ -664,11 +700,222 @@
     </message>
 </context>
 <context>
+    <name>resect::DisplayToolBar</name>
+    <message>
+        <location filename="../widgets/display_toolbar.cpp" line="+29"/>
+        <source>Display</source>
+        <translation>Affichage</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Display</source>
+        <translation>&amp;Affichage</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Quality</source>
+        <translation>Qualité</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Colour the tets by the quality overlay (Quality dock)</source>
+        <translation>Colorer les tétraèdres selon la superposition de qualité (panneau Qualité)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pieces</source>
+        <translation>Morceaux</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Colour every piece the cuts made, resected chips included, in its own colour</source>
+        <translation>Colorer chaque morceau issu des coupes, copeaux réséqués compris, de sa propre couleur</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cut faces</source>
+        <translation>Faces de coupe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Draw the faces the cuts made in their own colour (and texture on the surface)</source>
+        <translation>Dessiner les faces créées par les coupes dans leur propre couleur (et texture sur la surface)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Last cut</source>
+        <translation>Dernière coupe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Outline the tets the last cut produced or changed</source>
+        <translation>Entourer les tétraèdres produits ou modifiés par la dernière coupe</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>How the pieces a cut took off the anchored tissue are drawn</source>
+        <translation>Comment sont dessinés les morceaux qu&apos;une coupe a détachés du tissu fixé</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show resected pieces</source>
+        <translation>Afficher les morceaux réséqués</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Dim resected pieces</source>
+        <translation>Atténuer les morceaux réséqués</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hide resected pieces</source>
+        <translation>Masquer les morceaux réséqués</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Shown</source>
+        <translation>Affichés</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Dimmed</source>
+        <translation>Atténués</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Hidden</source>
+        <translation>Masqués</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Move the pieces apart from the tissue&apos;s centre (display only: the tissue is not changed)</source>
+        <translation>Écarter les morceaux du centre du tissu (affichage seulement : le tissu n&apos;est pas modifié)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Explode pieces</source>
+        <translation>Éclater les morceaux</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Colour:</source>
+        <translation>Couleur :</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Resected:</source>
+        <translation>Réséqués :</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Explode:</source>
+        <translation>Éclatement :</translation>
+    </message>
+</context>
+<context>
     <name>resect::DocumentOpener</name>
     <message>
         <location filename="../widgets/document_opener.cpp" line="+57"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
+    </message>
+</context>
+<context>
+    <name>resect::EffectParameterEditor</name>
+    <message>
+        <location filename="../widgets/effect_parameter_editor.cpp" line="+56"/>
+        <source>Springs</source>
+        <translation>Ressorts</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Springs on the edges (distance term)</source>
+        <translation>Ressorts sur les arêtes (terme de distance)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Volume</source>
+        <translation>Volume</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Volume preservation of every tet</source>
+        <translation>Conservation du volume de chaque tétraèdre</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Area</source>
+        <translation>Aire</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Area preservation of the boundary triangles</source>
+        <translation>Conservation de l&apos;aire des triangles du bord</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>x </source>
+        <translation>x </translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>y </source>
+        <translation>y </translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>z </source>
+        <translation>z </translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> m/s²</source>
+        <translation> m/s²</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The length of the acceleration; its direction is kept</source>
+        <translation>La norme de l&apos;accélération ; sa direction est conservée</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Magnitude</source>
+        <translation>Norme</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Radius of the loop&apos;s wire: surface nodes closer to the tool&apos;s curve are pushed out</source>
+        <translation>Rayon du fil de l&apos;anse : les nœuds de surface plus proches de la courbe de l&apos;outil sont repoussés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wire radius</source>
+        <translation>Rayon du fil</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source> 1/s</source>
+        <translation> 1/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mass-proportional damping f = -c m v: kinetic energy decays with the time constant 1/(2c)</source>
+        <translation>Amortissement proportionnel à la masse f = -c m v : l&apos;énergie cinétique décroît avec la constante de temps 1/(2c)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Coefficient</source>
+        <translation>Coefficient</translation>
     </message>
 </context>
 <context>
@@ -761,6 +1008,84 @@
     </message>
 </context>
 <context>
+    <name>resect::FixedRegionEditor</name>
+    <message>
+        <location filename="../widgets/fixed_region_editor.cpp" line="+35"/>
+        <source>Add base box</source>
+        <translation>Ajouter la boîte de base</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A box around the bottom %1 % of the tissue&apos;s height</source>
+        <translation>Une boîte autour des %1 % inférieurs de la hauteur du tissu</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Place in view</source>
+        <translation>Placer dans la vue</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Draws the boxes in the view: drag a face&apos;s handle to move that face (red x, green y, blue z); drag elsewhere to turn the view</source>
+        <translation>Dessine les boîtes dans la vue : faites glisser la poignée d&apos;une face pour déplacer cette face (rouge x, vert y, bleu z) ; glisser ailleurs fait tourner la vue</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>Box %1 (mm)</source>
+        <translation>Boîte %1 (mm)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>max</source>
+        <translation>max</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Remove</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>A box can be added once the tissue is loaded.</source>
+        <translation>Une boîte peut être ajoutée une fois le tissu chargé.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>1 node of the uncut tissue</source>
+        <translation>1 nœud du tissu non coupé</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 nodes of the uncut tissue</source>
+        <translation>%1 nœuds du tissu non coupé</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Anchored nodes: not derived yet</source>
+        <translation>Nœuds fixés : pas encore calculés</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No fixed region: nothing is anchored.</source>
+        <translation>Aucune région fixée : rien n&apos;est ancré.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>1 node anchored</source>
+        <translation>1 nœud ancré</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 nodes anchored</source>
+        <translation>%1 nœuds ancrés</translation>
+    </message>
+</context>
+<context>
     <name>resect::Language</name>
     <message>
         <location filename="../widgets/language.cpp" line="+54"/>
@@ -782,7 +1107,7 @@
 <context>
     <name>resect::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+312"/>
+        <location filename="../app/studio/main_window.cpp" line="+336"/>
         <location line="+11"/>
         <location line="+169"/>
         <location line="+59"/>
@@ -790,7 +1115,7 @@
         <translation>Resect Studio</translation>
     </message>
     <message>
-        <location line="-366"/>
+        <location line="-372"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
@@ -920,7 +1245,12 @@
         <translation>Afficher la &amp;surface haute résolution</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
+        <source>Display &amp;toolbar</source>
+        <translation>&amp;Barre d&apos;affichage</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>&amp;Language</source>
         <translation>&amp;Langue</translation>
     </message>
@@ -1131,7 +1461,7 @@
         <translation>Annuler</translation>
     </message>
     <message>
-        <location line="-430"/>
+        <location line="-451"/>
         <source>The tissue could not be loaded.</source>
         <translation>Le tissu n&apos;a pas pu être chargé.</translation>
     </message>
@@ -1146,7 +1476,7 @@
         <translation>La dernière modification a été annulée : %1</translation>
     </message>
     <message>
-        <location line="+242"/>
+        <location line="+263"/>
         <source>Could not open %1.</source>
         <translation>Impossible d&apos;ouvrir %1.</translation>
     </message>
@@ -1414,7 +1744,7 @@
 <context>
     <name>resect::ScenarioCommand</name>
     <message>
-        <location filename="../widgets/scenario_commands.cpp" line="+81"/>
+        <location filename="../widgets/scenario_commands.cpp" line="+83"/>
         <source>Change cut settings</source>
         <translation>Modifier les paramètres de coupe</translation>
     </message>
@@ -1449,7 +1779,17 @@
         <translation>Désactiver l&apos;effet</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+50"/>
+        <source>Change effect parameters</source>
+        <translation>Modifier les paramètres des effets</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>Change fixed regions</source>
+        <translation>Modifier les régions fixées</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>Change title</source>
         <translation>Modifier le titre</translation>
     </message>
@@ -1467,7 +1807,7 @@
         <translation>exemple « %1 » inconnu (connus : %2)</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+47"/>
         <source>New %1 scenario</source>
         <translation>Nouveau scénario %1</translation>
     </message>
@@ -1477,7 +1817,7 @@
         <translation>%1 : fichier introuvable</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+53"/>
         <source>the document has no file name yet (use Save As)</source>
         <translation>le document n&apos;a pas encore de nom de fichier (utilisez Enregistrer sous)</translation>
     </message>
@@ -1496,6 +1836,16 @@
         <source>there is no autosave to recover</source>
         <translation>aucune sauvegarde automatique à récupérer</translation>
     </message>
+    <message>
+        <location line="+248"/>
+        <source>Remove the last fixed region</source>
+        <translation>Supprimer la dernière région fixée</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Fix a region</source>
+        <translation>Fixer une région</translation>
+    </message>
 </context>
 <context>
     <name>resect::SimulationController</name>
@@ -1513,7 +1863,7 @@
 <context>
     <name>resect::SimulationPanel</name>
     <message>
-        <location filename="../widgets/simulation_panel.cpp" line="+24"/>
+        <location filename="../widgets/simulation_panel.cpp" line="+27"/>
         <source>Deformation (mass-spring)</source>
         <translation>Déformation (masses-ressorts)</translation>
     </message>
@@ -1538,13 +1888,13 @@
         <translation>Amortissement</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <location line="+84"/>
+        <location line="+15"/>
+        <location line="+157"/>
         <source>Play</source>
         <translation>Lecture</translation>
     </message>
     <message>
-        <location line="-82"/>
+        <location line="-155"/>
         <source>Step</source>
         <translation>Avancer d&apos;un pas</translation>
     </message>
@@ -1554,12 +1904,12 @@
         <translation>Réinitialiser</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+15"/>
         <source>Effects in the scenario</source>
         <translation>Effets du scénario</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+36"/>
         <source>Cost</source>
         <translation>Coût</translation>
     </message>
@@ -1584,7 +1934,17 @@
         <translation>Temps réel</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+27"/>
+        <source>The last edit was undone: %1</source>
+        <translation>La dernière modification a été annulée : %1</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Fixed regions: the tissue is not loaded yet, so its base cannot be anchored. Try again once it is shown.</source>
+        <translation>Régions fixées : le tissu n&apos;est pas encore chargé, sa base ne peut donc pas être ancrée. Réessayez une fois qu&apos;il est affiché.</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -1796,7 +2156,7 @@
 <context>
     <name>resect::TissueSession</name>
     <message>
-        <location filename="../widgets/tissue_session.cpp" line="+103"/>
+        <location filename="../widgets/tissue_session.cpp" line="+118"/>
         <source>There is no tissue to save.</source>
         <translation>Il n&apos;y a pas de tissu à enregistrer.</translation>
     </message>
@@ -1817,12 +2177,12 @@
     </message>
     <message>
         <location line="+66"/>
-        <location line="+320"/>
+        <location line="+355"/>
         <source>Opening was cancelled.</source>
         <translation>L&apos;ouverture a été annulée.</translation>
     </message>
     <message>
-        <location line="-227"/>
+        <location line="-262"/>
         <source>Internal error: %1</source>
         <translation>Erreur interne : %1</translation>
     </message>
@@ -1837,12 +2197,12 @@
         <translation>le scénario n&apos;a pas de tissu</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+90"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+120"/>
         <source>Checking the surface</source>
         <translation>Vérification de la surface</translation>
     </message>
@@ -1880,7 +2240,7 @@
 <context>
     <name>resect::VtkViewport</name>
     <message>
-        <location filename="../widgets/vtk_viewport.cpp" line="+103"/>
+        <location filename="../widgets/vtk_viewport.cpp" line="+109"/>
         <source>3-D view unavailable: %1.</source>
         <translation>Vue 3D indisponible : %1.</translation>
     </message>

@@ -7,6 +7,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFrame>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -121,6 +122,23 @@ CutPanel::CutPanel(ScenarioDocument& document, TissueSession& session, CutPrevie
     m_previewStatus->setObjectName(QStringLiteral("previewStatus"));
     m_previewStatus->setWordWrap(true);
     previewForm->addRow(m_previewStatus);
+    m_warning = new QFrame;
+    m_warning->setObjectName(QStringLiteral("previewWarning"));
+    m_warning->setStyleSheet(QStringLiteral("QFrame#previewWarning { background: #fff3cd; border: 1px solid #c09000; }"));
+    auto* warningLayout = new QVBoxLayout(m_warning);
+    m_warningText = new QLabel;
+    m_warningText->setObjectName(QStringLiteral("previewWarningText"));
+    m_warningText->setWordWrap(true);
+    m_warningText->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_warningText->setStyleSheet(QStringLiteral("QLabel { color: #7a4a00; }"));
+    warningLayout->addWidget(m_warningText);
+    m_inspectWorst = new QPushButton(tr("Inspect the worst tet"));
+    m_inspectWorst->setObjectName(QStringLiteral("inspectWorstTet"));
+    m_inspectWorst->setToolTip(tr("Shows the tet that limits the time step most in the quality dock's tet "
+                                  "inspector; click again for the next"));
+    warningLayout->addWidget(m_inspectWorst, 0, Qt::AlignLeft);
+    m_warning->hide();
+    previewForm->addRow(m_warning);
     addValue(previewForm, QStringLiteral("tets"), tr("Tets"));
     addValue(previewForm, QStringLiteral("added_tets"), tr("Added tets"));
     addValue(previewForm, QStringLiteral("cut_edges"), tr("Cut edges"));
@@ -207,6 +225,7 @@ CutPanel::CutPanel(ScenarioDocument& document, TissueSession& session, CutPrevie
             m_document.setImproveCoarsen(v);
     });
     connect(m_apply, &QPushButton::clicked, this, &CutPanel::apply);
+    connect(m_inspectWorst, &QPushButton::clicked, this, &CutPanel::inspectNextWorstTet);
     connect(m_discard, &QPushButton::clicked, &m_preview, &CutPreview::discard);
 
     // Document and session -> panel.
@@ -293,6 +312,7 @@ void CutPanel::updatePreview() {
     else
         m_previewStatus->setText(tr("Preview of the pending cut (not applied yet)."));
 
+    updateWarning();
     if (!preview || !current || !pending) {
         for (auto& [key, label] : m_values)
             label->clear();
@@ -334,6 +354,60 @@ void CutPanel::updatePreview() {
     set(QStringLiteral("surface_ms"), number(preview->surfaceCutMs, 2));
     set(QStringLiteral("improve_ms"), number(preview->improveMs, 2));
     set(QStringLiteral("total_ms"), number(preview->totalMs, 3));
+}
+
+QString CutPanel::warning() const {
+    return m_warning->isHidden() ? QString() : m_warningText->text();
+}
+
+void CutPanel::updateWarning() {
+    const auto preview = m_preview.preview();
+    const PreviewWarnings w = m_preview.hasPending() && m_preview.error().isEmpty() ? m_preview.warnings()
+                                                                                    : PreviewWarnings{};
+    if (!preview || !w.any()) {
+        m_warning->hide();
+        m_warnedPreview = nullptr;
+        return;
+    }
+    if (m_warnedPreview != preview.get()) {
+        m_warnedPreview = preview.get();
+        m_nextWorst = 0;
+    }
+    QStringList lines;
+    if (w.stepDropped) {
+        const auto current = m_session.current();
+        lines << tr("This cut makes the stable time step %1 times smaller (%2 s → %3 s): an explicit "
+                    "simulation needs that many more steps, and the tets that cause it are tiny or flat.")
+                     .arg(number(w.stepDrop, 3), number(current ? current->stableDt : 0),
+                          number(preview->stableDt));
+    }
+    if (w.snapsAllRefused)
+        lines << tr("Snapping refused every cut node (%1 refused): the cut nodes stay where the sweep "
+                    "crossed the edges, as with subdivision, which leaves small and flat tets.")
+                     .arg(w.refusedSnaps);
+    QStringList tets;
+    for (int t : preview->stepLimitingTets)
+        tets << QString::number(t);
+    if (!tets.isEmpty())
+        lines << tr("Tets that limit the time step, worst first: %1.").arg(tets.join(QStringLiteral(", ")));
+    m_warningText->setText(tr("Warning: %1").arg(lines.join(QLatin1Char(' '))));
+    m_inspectWorst->setEnabled(!preview->stepLimitingTets.empty());
+    m_inspectWorst->setText(m_nextWorst == 0 ? tr("Inspect the worst tet")
+                                             : tr("Inspect the next (%1 of %2)")
+                                                   .arg(m_nextWorst + 1)
+                                                   .arg(preview->stepLimitingTets.size()));
+    m_warning->show();
+}
+
+void CutPanel::inspectNextWorstTet() {
+    const auto preview = m_preview.preview();
+    if (!preview || preview->stepLimitingTets.empty())
+        return;
+    const auto& tets = preview->stepLimitingTets;
+    const int tet = tets[static_cast<std::size_t>(m_nextWorst) % tets.size()];
+    m_nextWorst = (m_nextWorst + 1) % static_cast<int>(tets.size());
+    updateWarning();
+    emit inspectTetRequested(tet);
 }
 
 void CutPanel::apply() {

@@ -14,6 +14,13 @@
 // while the preview on show succeeded and is up to date (CutPreview::canApply); otherwise the
 // preview's status line (previewStatus) says why, in place.
 //
+// A preview that would wreck the simulation warns in the preview area ("previewWarning", its
+// text "previewWarningText"; CutPreview::warnings): when it divides the stable time step by
+// more than CutPreview::kStepDropWarning, or when snapping refused every cut node. The tets
+// that limit the step are one click away: "inspectWorstTet" asks for the worst
+// (inspectTetRequested: the main window shows it in the quality dock's tet inspector), and
+// each further click for the next of TissueState::stepLimitingTets.
+//
 // The notice line (cutNotice) shows, in place of a dialog, why the document refused the last
 // edit (TissueSession::editRefused: a stroke, sweep or setting whose cuts fail was undone) or
 // why its tissue fails; it clears at the next edit or a new document.
@@ -48,16 +55,23 @@ public:
     QString previewValue(const QString& key) const;
     /// The notice line's text (empty when there is nothing to report).
     QString notice() const;
+    /// The preview's warning (empty when it does not warn).
+    QString warning() const;
 
 signals:
     /// Apply failed (no pending cut, or an invalid one); `message` says why.
     void applyFailed(const QString& message);
+    /// The author asked to see tet `tet` of the preview (a tet that limits its time step).
+    void inspectTetRequested(int tet);
 
 private:
     void syncFromDocument();
     void updatePreview();
     void apply();
     void setNotice(const QString& text);
+    /// Shows or hides the warning of the preview on show.
+    void updateWarning();
+    void inspectNextWorstTet();
     QLabel* addValue(QFormLayout* form, const QString& key, const QString& label);
 
     ScenarioDocument& m_document;
@@ -81,6 +95,11 @@ private:
 
     QLabel* m_notice = nullptr;
     QLabel* m_previewStatus = nullptr;
+    QWidget* m_warning = nullptr;
+    QLabel* m_warningText = nullptr;
+    QPushButton* m_inspectWorst = nullptr;
+    const void* m_warnedPreview = nullptr; ///< the preview the warning is about
+    int m_nextWorst = 0;                   ///< index into its stepLimitingTets
     QPushButton* m_apply = nullptr;
     QPushButton* m_discard = nullptr;
     std::vector<std::pair<QString, QLabel*>> m_values;

@@ -1,5 +1,6 @@
 #include "widgets/cut_preview.h"
 
+#include "core/mesh/stable_time_step.h"
 #include "scenario/scenario_sweeps.h"
 #include "widgets/scenario_document.h"
 #include "widgets/tissue_session.h"
@@ -8,7 +9,9 @@
 #include <QDeadlineTimer>
 #include <QMetaObject>
 
+#include <algorithm>
 #include <exception>
+#include <numeric>
 #include <utility>
 
 namespace resect {
@@ -182,8 +185,41 @@ CutPreview::Result CutPreview::compute(const Request& request, const std::atomic
         return result;
     }
     state->settle();
+    if (warningsOf(request.current.get(), state.get(), request.current->applied.options).any()) {
+        // The tets to inspect: those whose own step is smallest.
+        const std::vector<double> steps =
+            tetStableTimeSteps(state->mesh(), state->tissue.material());
+        std::vector<int> order(steps.size());
+        std::iota(order.begin(), order.end(), 0);
+        const auto count = std::min<std::size_t>(kStepLimitingTets, order.size());
+        std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(count),
+                          order.end(), [&](int a, int b) { return steps[a] < steps[b]; });
+        order.resize(count);
+        state->stepLimitingTets = std::move(order);
+    }
     result.preview = std::move(state);
     return result;
+}
+
+PreviewWarnings CutPreview::warningsOf(const TissueState* current, const TissueState* preview,
+                                       const CutOptions& options) {
+    PreviewWarnings w;
+    if (!current || !preview)
+        return w;
+    if (preview->stableDt > 0 && current->stableDt > 0)
+        w.stepDrop = current->stableDt / preview->stableDt;
+    w.stepDropped = w.stepDrop > kStepDropWarning;
+    const CutStats& c = preview->cutStats;
+    w.refusedSnaps = c.refusedSnaps;
+    w.snapsAllRefused = options.snap && c.refusedSnaps > 0 && c.snappedNodes == 0;
+    return w;
+}
+
+PreviewWarnings CutPreview::warnings() const {
+    const auto current = m_session.current();
+    if (!m_preview || !current)
+        return {};
+    return warningsOf(current.get(), m_preview.get(), m_preview->applied.options);
 }
 
 void CutPreview::finish(Result result) {

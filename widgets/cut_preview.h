@@ -12,6 +12,11 @@
 //
 // apply() adds the pending cut to the document as one undoable edit; the session then derives
 // the new current state from the document. A new document drops the pending cut.
+//
+// Warnings (issue 19, "cuts that wreck the simulation go unnoticed"): a preview whose stable
+// time step is more than kStepDropWarning times smaller than current's, or whose snapping
+// refused every cut node, warns (warnings()); its stepLimitingTets then name the tets that
+// limit the step, worst first (computed on the worker with the preview).
 
 #include "scenario/scenario_document.h"
 #include "widgets/tissue_state.h"
@@ -30,10 +35,30 @@ namespace resect {
 class ScenarioDocument;
 class TissueSession;
 
+/// What in a preview may wreck the simulation.
+struct PreviewWarnings {
+    double stepDrop = 1;          ///< current's stable step over the preview's (> 1: smaller)
+    bool stepDropped = false;     ///< stepDrop > CutPreview::kStepDropWarning
+    bool snapsAllRefused = false; ///< snapping was on and refused every cut node (>= 1)
+    int refusedSnaps = 0;
+    bool any() const { return stepDropped || snapsAllRefused; }
+};
+
 class CutPreview : public QObject {
     Q_OBJECT
 
 public:
+    /// A preview warns when it divides the stable time step by more than this.
+    static constexpr double kStepDropWarning = 10.0;
+    /// How many step-limiting tets a warning preview names (TissueState::stepLimitingTets).
+    static constexpr int kStepLimitingTets = 5;
+
+    /// The warnings of `preview`, cut from `current` with `options` (none when either is null).
+    static PreviewWarnings warningsOf(const TissueState* current, const TissueState* preview,
+                                      const CutOptions& options);
+    /// The warnings of the preview on show (against the session's current state).
+    PreviewWarnings warnings() const;
+
     CutPreview(ScenarioDocument& document, TissueSession& session, QObject* parent = nullptr);
     /// Cancels the worker and waits for it (at most the current stage of one cut).
     ~CutPreview() override;

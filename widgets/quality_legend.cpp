@@ -32,7 +32,8 @@ QualityLegend::QualityLegend() : m_bar(vtkSmartPointer<vtkScalarBarActor>::New()
 void QualityLegend::update(const TetMeshActor& actor) {
     m_bar->SetLookupTable(actor.lookupTable());
     m_bar->SetTitle(qualityMeasureTitle(actor.overlayMeasure()).toUtf8().constData());
-    m_bar->SetVisibility(actor.overlayMeasure() != QualityMeasure::None);
+    m_bar->SetVisibility(actor.overlayMeasure() != QualityMeasure::None &&
+                         actor.colorMode() == TetColorMode::Quality);
     m_bar->Modified();
 }
 

@@ -23,7 +23,7 @@ public:
     QualityLegend();
 
     /// Takes the actor's lookup table (and so its colour range) and measure name; shown
-    /// unless the overlay is None.
+    /// unless the overlay is None or the actor colours by piece.
     void update(const TetMeshActor& actor);
 
     vtkScalarBarActor* actor() const;

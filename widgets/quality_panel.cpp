@@ -380,6 +380,10 @@ void QualityPanel::inspectTet(const TetMesh& mesh, int tet, Scheme scheme) {
     m_inspector->setTet(mesh, tet, scheme);
 }
 
+void QualityPanel::selectTet(int tet) {
+    onPicked(tet);
+}
+
 void QualityPanel::setMeshProvider(std::function<const TetMesh*()> provider) {
     m_meshProvider = std::move(provider);
 }

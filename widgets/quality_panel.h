@@ -66,6 +66,9 @@ public:
     /// The viewport's mesh was replaced (setTetMesh): re-place the clipping plane in the new
     /// bounds and update the legend.
     void meshChanged();
+    /// The legend follows the actor's overlay and colour mode (after a change made elsewhere,
+    /// e.g. colouring by piece).
+    void updateLegend();
 
     /// Histogram series and table column "before" / "after" from a mesh (its quality in the
     /// reference configuration) and its stable time step (<= 0: not computed, "—").
@@ -82,6 +85,9 @@ public:
 
     /// Shows one tet in the inspector (-1 clears it).
     void inspectTet(const TetMesh& mesh, int tet, Scheme scheme);
+    /// Selects tet `tet` of the mesh on show as a click of the picker on it would: inspected
+    /// (with the mesh provider), the inspector's tab raised, tetPicked() emitted.
+    void selectTet(int tet);
     /// With a provider, a click of the picker fills the inspector itself, with the mesh the
     /// provider returns (null: nothing) and the scheme from the actor's tetScheme().
     void setMeshProvider(std::function<const TetMesh*()> provider);
@@ -117,7 +123,6 @@ private:
     void applyClip();
     void syncRangeControls();
     void configureThreshold(QualityMeasure filterMeasure);
-    void updateLegend();
     void changed();
     TetMeshActor* actor() const;
 

@@ -14,6 +14,8 @@ namespace {
 /// Command ids for merging (QUndoCommand::id); -1 never merges.
 constexpr int kCutSettingsIdBase = 1000;
 constexpr int kTitleId = 2000;
+constexpr int kEffectParametersId = 3000;
+constexpr int kFixedRegionsId = 4000;
 
 bool isNumeric(CutField field) {
     switch (field) {
@@ -231,6 +233,69 @@ void SetEffectEnabledCommand::undo() {
         remove();
     else
         insert();
+}
+
+SetEffectParametersCommand::SetEffectParametersCommand(ScenarioDocument& document, std::string name,
+                                                       QJsonObject before, QJsonObject after)
+    : ScenarioCommand(document, QCoreApplication::translate("resect::ScenarioCommand", "Change effect parameters")),
+      m_name(std::move(name)), m_before(std::move(before)), m_after(std::move(after)) {}
+
+void SetEffectParametersCommand::set(const QJsonObject& parameters) {
+    for (EffectSpec& e : scenario().effects)
+        if (e.name == m_name)
+            e.parameters = parameters;
+    notify(ScenarioDocument::EffectsPart);
+}
+
+void SetEffectParametersCommand::redo() {
+    set(m_after);
+}
+
+void SetEffectParametersCommand::undo() {
+    set(m_before);
+}
+
+int SetEffectParametersCommand::id() const {
+    return kEffectParametersId;
+}
+
+bool SetEffectParametersCommand::mergeWith(const QUndoCommand* other) {
+    const auto* next = static_cast<const SetEffectParametersCommand*>(other);
+    if (next->m_name != m_name)
+        return false;
+    m_after = next->m_after;
+    setObsolete(m_after == m_before);
+    return true;
+}
+
+// ---- Fixed regions ---------------------------------------------------------------------
+
+SetFixedRegionsCommand::SetFixedRegionsCommand(ScenarioDocument& document, std::vector<FixedRegion> before,
+                                               std::vector<FixedRegion> after, int mergeKey)
+    : ScenarioCommand(document, QCoreApplication::translate("resect::ScenarioCommand", "Change fixed regions")),
+      m_before(std::move(before)), m_after(std::move(after)), m_mergeKey(mergeKey) {}
+
+void SetFixedRegionsCommand::redo() {
+    scenario().tissues.front().fixedRegions = m_after;
+    notify(ScenarioDocument::FixedRegionsPart);
+}
+
+void SetFixedRegionsCommand::undo() {
+    scenario().tissues.front().fixedRegions = m_before;
+    notify(ScenarioDocument::FixedRegionsPart);
+}
+
+int SetFixedRegionsCommand::id() const {
+    return m_mergeKey >= 0 ? kFixedRegionsId : -1;
+}
+
+bool SetFixedRegionsCommand::mergeWith(const QUndoCommand* other) {
+    const auto* next = static_cast<const SetFixedRegionsCommand*>(other);
+    if (next->m_mergeKey != m_mergeKey)
+        return false;
+    m_after = next->m_after;
+    setObsolete(m_after == m_before);
+    return true;
 }
 
 // ---- Metadata --------------------------------------------------------------------------

@@ -118,6 +118,42 @@ private:
     int m_index = -1; ///< where the effect is (or was) in the list
 };
 
+/// Replaces the parameters of an effect that is on. Consecutive commands for the same effect
+/// merge into one undo step (typing a value, stepping a spin box).
+class SetEffectParametersCommand : public ScenarioCommand {
+public:
+    SetEffectParametersCommand(ScenarioDocument& document, std::string name, QJsonObject before,
+                               QJsonObject after);
+    void redo() override;
+    void undo() override;
+    int id() const override;
+    bool mergeWith(const QUndoCommand* other) override;
+
+private:
+    void set(const QJsonObject& parameters);
+
+    std::string m_name;
+    QJsonObject m_before;
+    QJsonObject m_after;
+};
+
+/// Replaces the first tissue's fixed regions. Consecutive commands with the same merge key
+/// (>= 0: one region's index) merge into one undo step; -1 never merges.
+class SetFixedRegionsCommand : public ScenarioCommand {
+public:
+    SetFixedRegionsCommand(ScenarioDocument& document, std::vector<FixedRegion> before,
+                           std::vector<FixedRegion> after, int mergeKey);
+    void redo() override;
+    void undo() override;
+    int id() const override;
+    bool mergeWith(const QUndoCommand* other) override;
+
+private:
+    std::vector<FixedRegion> m_before;
+    std::vector<FixedRegion> m_after;
+    int m_mergeKey;
+};
+
 /// Changes nothing and is never added: it is obsolete from the start, and QUndoStack::push
 /// deletes such a command after deleting the commands above the current index. Pushed by
 /// ScenarioDocument::revertTo to drop the edits it undid (no redo of them is left).

@@ -122,6 +122,7 @@ bool ScenarioDocument::sampleScenario(const QString& name, Scenario& out, QStrin
     tissue.name = toStd(name);
     tissue.surface = "sample:" + toStd(name);
     out = newScenario(std::move(tissue));
+    applySceneDefaults(out, sampleBaseRegion(*sampleFromName(toStd(name))));
     return true;
 }
 
@@ -158,9 +159,13 @@ Scenario ScenarioDocument::newScenario(TissueSpec tissue) {
     s.metadata.title = toStd(tr("New %1 scenario").arg(fromStd(tissue.name)));
     s.tissues.push_back(std::move(tissue));
     s.tool = defaultTool();
-    EffectSpec deformation;
-    deformation.name = "deformation";
-    s.effects.push_back(std::move(deformation));
+    // The effects a new scene starts with; a sample's also anchors its base (sampleScenario).
+    for (const char* name : {"deformation", "damping"}) {
+        EffectSpec effect;
+        effect.name = name;
+        effect.parameters = defaultEffectParameters(name);
+        s.effects.push_back(std::move(effect));
+    }
     return s;
 }
 
@@ -390,6 +395,8 @@ void ScenarioDocument::notify(unsigned parts) {
         emit effectsChanged();
     if (parts & MetadataPart)
         emit metadataChanged();
+    if (parts & FixedRegionsPart)
+        emit fixedRegionsChanged();
     emit changed();
 }
 
@@ -530,10 +537,9 @@ bool ScenarioDocument::setEffectEnabled(const QString& name, bool enabled) {
     EffectSpec effect;
     effect.name = key;
     if (enabled) {
-        if (m_offEffectParameters.contains(name))
-            effect.parameters = m_offEffectParameters.value(name).toObject();
-        else if (key == "tool-contact")
-            effect.parameters = {{"radius", kDefaultToolContactRadius}};
+        effect.parameters = m_offEffectParameters.contains(name)
+                                ? m_offEffectParameters.value(name).toObject()
+                                : defaultEffectParameters(key);
     } else {
         m_offEffectParameters.insert(name, current->parameters);
     }
@@ -543,6 +549,76 @@ bool ScenarioDocument::setEffectEnabled(const QString& name, bool enabled) {
 
 bool ScenarioDocument::toggleEffect(const QString& name) {
     return setEffectEnabled(name, !isEffectEnabled(name));
+}
+
+bool ScenarioDocument::setEffectParameters(const QString& name, const QJsonObject& parameters) {
+    const EffectSpec* effect = m_scenario.findEffect(toStd(name));
+    if (!effect)
+        return false;
+    if (effect->parameters != parameters)
+        m_undo.push(new SetEffectParametersCommand(*this, effect->name, effect->parameters, parameters));
+    return true;
+}
+
+const std::vector<FixedRegion>& ScenarioDocument::fixedRegions() const {
+    static const std::vector<FixedRegion> none;
+    return m_scenario.tissues.empty() ? none : m_scenario.tissues.front().fixedRegions;
+}
+
+void ScenarioDocument::pushFixedRegions(std::vector<FixedRegion> after, int mergeKey) {
+    if (after == fixedRegions())
+        return;
+    m_undo.push(new SetFixedRegionsCommand(*this, fixedRegions(), std::move(after), mergeKey));
+}
+
+bool ScenarioDocument::addFixedRegion(const FixedRegion& region) {
+    if (m_scenario.tissues.empty())
+        return false;
+    std::vector<FixedRegion> regions = fixedRegions();
+    regions.push_back(region);
+    pushFixedRegions(std::move(regions), -1);
+    return true;
+}
+
+bool ScenarioDocument::setFixedRegion(int index, const FixedRegion& region) {
+    if (index < 0 || index >= static_cast<int>(fixedRegions().size()))
+        return false;
+    std::vector<FixedRegion> regions = fixedRegions();
+    regions[static_cast<std::size_t>(index)] = region;
+    pushFixedRegions(std::move(regions), index);
+    return true;
+}
+
+bool ScenarioDocument::removeFixedRegion(int index) {
+    if (index < 0 || index >= static_cast<int>(fixedRegions().size()))
+        return false;
+    std::vector<FixedRegion> regions = fixedRegions();
+    regions.erase(regions.begin() + index);
+    const bool lastOfFixed = regions.empty() && isEffectEnabled(QStringLiteral("fixed"));
+    if (lastOfFixed)
+        m_undo.beginMacro(tr("Remove the last fixed region"));
+    pushFixedRegions(std::move(regions), -1);
+    if (lastOfFixed) {
+        setEffectEnabled(QStringLiteral("fixed"), false);
+        m_undo.endMacro();
+    }
+    return true;
+}
+
+bool ScenarioDocument::fixRegion(const FixedRegion& region) {
+    if (m_scenario.tissues.empty())
+        return false;
+    if (isEffectEnabled(QStringLiteral("fixed")))
+        return true;
+    const bool add = fixedRegions().empty();
+    if (add) {
+        m_undo.beginMacro(tr("Fix a region"));
+        addFixedRegion(region);
+    }
+    setEffectEnabled(QStringLiteral("fixed"), true);
+    if (add)
+        m_undo.endMacro();
+    return true;
 }
 
 bool ScenarioDocument::revertTo(const std::function<bool(const Scenario&)>& good) {

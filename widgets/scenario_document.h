@@ -33,6 +33,7 @@
 // of the document does not derive: the document never keeps such a state).
 
 #include "scenario/scenario_document.h"
+#include "scenario/scene_defaults.h"
 
 #include <QObject>
 #include <QString>
@@ -58,9 +59,8 @@ public:
     static constexpr const char* kAutosaveFileName = "autosave.resect.json";
     static constexpr const char* kAutosaveInfoFileName = "autosave.info.json";
     /// Radius (mm) of the tool-contact effect when it is switched on for the first time
-    /// (the effect requires one; scenario_document.h). The wire of a resectoscope loop is
-    /// about 0.3 mm thick; 0.5 leaves a small margin.
-    static constexpr double kDefaultToolContactRadius = 0.5;
+    /// (the effect requires one; scenario/scene_defaults.h).
+    static constexpr double kDefaultToolContactRadius = resect::kDefaultToolContactRadius;
 
     /// Which part of the scenario an edit touched (commands report it; see notify()).
     enum Part : unsigned {
@@ -69,6 +69,7 @@ public:
         SweepsPart = 1u << 2,
         EffectsPart = 1u << 3,
         MetadataPart = 1u << 4,
+        FixedRegionsPart = 1u << 5, ///< the first tissue's fixed regions
         AllParts = 0xffu,
     };
 
@@ -85,13 +86,17 @@ public:
 
     // ---- Files ------------------------------------------------------------------------
     /// A new, unsaved document with the built-in anatomy "sample:NAME" (polyp or myoma), a
-    /// default tool (a half loop, 7 mm wide), the deformation effect and default cut
-    /// settings; valid as it is. False (document unchanged) for an unknown name.
+    /// default tool (a half loop, 7 mm wide), default cut settings and a new scene's defaults
+    /// (scenario/scene_defaults.h): the base anchored by a fixed region, the deformation,
+    /// fixed and damping effects; valid as it is and ready to simulate. False (document
+    /// unchanged) for an unknown name.
     bool newFromSample(const QString& name, QString* error = nullptr);
     /// A new, unsaved document whose tissue is the anatomy in `path`: a tet mesh (.vtu, .msh,
     /// .node, .ele) used as it is, or any surface assimp reads, meshed coarsely when the
-    /// tissue is loaded (TissueSession). The file is only checked to exist here; reading
-    /// errors come from loading. False (document unchanged) if there is no such file.
+    /// tissue is loaded (TissueSession); the deformation and damping effects (its base is not
+    /// known before it is loaded: switching the fixed effect on anchors it, fixRegion). The
+    /// file is only checked to exist here; reading errors come from loading. False (document
+    /// unchanged) if there is no such file.
     bool newFromAnatomy(const QString& path, QString* error = nullptr);
     /// Reads and validates `path`. On failure returns false, the document is unchanged and
     /// *error lists every error (one per line, "FILE: PATH: MESSAGE").
@@ -180,10 +185,31 @@ public:
 
     bool isEffectEnabled(const QString& name) const;
     /// Adds or removes the named effect (knownEffectNames()); an effect switched back on gets
-    /// the parameters it had when it was switched off (else its defaults). False for an
-    /// unknown name.
+    /// the parameters it had when it was switched off (else defaultEffectParameters,
+    /// scenario/scene_defaults.h). False for an unknown name.
     bool setEffectEnabled(const QString& name, bool enabled);
     bool toggleEffect(const QString& name);
+    /// Replaces the parameters of an effect that is on (scenario_document.h's table; they are
+    /// validated by deriving the state, TissueSession). Consecutive changes of one effect's
+    /// parameters merge into one undo step. False if the effect is not on.
+    bool setEffectParameters(const QString& name, const QJsonObject& parameters);
+
+    /// The first tissue's fixed regions (boxes in reference coordinates, mm; the nodes inside
+    /// are anchored: held by the fixed effect, and what tells the tissue from resected chips).
+    /// Empty without a tissue.
+    const std::vector<FixedRegion>& fixedRegions() const;
+    /// Appends a region to the first tissue's. False without a tissue.
+    bool addFixedRegion(const FixedRegion& region);
+    /// Replaces region `index`; consecutive changes of one region (typing, dragging a handle)
+    /// merge into one undo step. False for an index out of range.
+    bool setFixedRegion(int index, const FixedRegion& region);
+    /// Removes region `index`. Removing the last region while the fixed effect is on switches
+    /// the effect off too, in the same undo step (the effect needs a region). False for an
+    /// index out of range.
+    bool removeFixedRegion(int index);
+    /// Switches the fixed effect on; if the first tissue has no fixed region, `region` is
+    /// added first, in the same undo step (the effect needs one). False without a tissue.
+    bool fixRegion(const FixedRegion& region);
 
     void setTitle(const QString& title);
 
@@ -203,6 +229,8 @@ signals:
     void sweepsChanged();
     void effectsChanged();
     void metadataChanged();
+    /// The first tissue's fixed regions changed.
+    void fixedRegionsChanged();
     /// A different document was loaded (new, open, recover, close): views rebuild.
     void documentReset();
     void fileChanged(const QString& path);
@@ -211,6 +239,10 @@ signals:
 
 private:
     friend class ScenarioCommand;
+
+    /// Pushes the change of the first tissue's regions to `after` (`mergeKey` >= 0: merges
+    /// with the previous change of the same key).
+    void pushFixedRegions(std::vector<FixedRegion> after, int mergeKey);
 
     /// Called by commands after they changed `parts` of m_scenario.
     void notify(unsigned parts);

@@ -3,6 +3,7 @@
 #include "widgets/cut_preview.h"
 #include "widgets/quality_panel.h"
 #include "widgets/simulation_controller.h"
+#include "widgets/tissue_display.h"
 #include "widgets/tissue_session.h"
 #include "widgets/vtk_viewport.h"
 
@@ -18,7 +19,10 @@ ShownTissue::ShownTissue(TissueSession& session, CutPreview& preview,
                          SimulationController& simulation, VtkViewport& viewport,
                          QualityPanel& quality, QObject* parent)
     : QObject(parent), m_session(session), m_preview(preview), m_simulation(simulation),
-      m_viewport(viewport), m_quality(quality) {
+      m_viewport(viewport), m_quality(quality), m_display(new TissueDisplay(viewport, this)) {
+    // The picked tet is outlined; the legend is only for the quality colouring.
+    connect(&m_quality, &QualityPanel::tetPicked, m_display, &TissueDisplay::setPickedTet);
+    connect(m_display, &TissueDisplay::settingsChanged, &m_quality, &QualityPanel::updateLegend);
     // A picked tet is inspected in the mesh on show.
     m_quality.setMeshProvider([self = QPointer<ShownTissue>(this)]() -> const TetMesh* {
         return self ? self->mesh() : nullptr;
@@ -64,15 +68,17 @@ void ShownTissue::setTetsVisible(bool visible) {
 void ShownTissue::setSurfaceVisible(bool visible) {
     m_surfaceVisible = visible;
     // Simulation steps move the surface only while it is visible: bring it up to date.
-    if (visible)
-        if (const Tissue* tissue = tissueOf(m_source))
-            m_viewport.setSurface(tissue->surface().surface(), false);
+    const Tissue* tissue = tissueOf(m_source);
+    if (visible && tissue &&
+        !m_viewport.surfaceActor().updatePositions(tissue->surface().surface()))
+        m_viewport.setSurface(tissue->surface().surface(), false);
     applyVisibility();
+    if (visible && tissue)
+        m_display->follow(*tissue);
 }
 
 void ShownTissue::applyVisibility() {
-    m_viewport.tetMeshActor().actor()->SetVisibility(m_tetsVisible);
-    m_viewport.surfaceActor().actor()->SetVisibility(m_surfaceVisible);
+    m_display->setMeshesVisible(m_tetsVisible, m_surfaceVisible);
     m_viewport.requestRender();
 }
 
@@ -81,12 +87,15 @@ void ShownTissue::onBaseChanged() {
         m_source = Source::None;
         m_state.reset();
         m_viewport.clear();
+        m_display->clear();
         m_quality.meshChanged();
         updateComparison();
         return;
     }
-    // Frame the tissue when it is first shown (its cuts may still be being applied).
+    // Frame the tissue when it is first shown (its cuts may still be being applied); a tet
+    // picked in another tissue is not outlined in this one.
     m_frameNext = true;
+    m_display->setPickedTet(-1);
     refresh(true);
 }
 
@@ -107,8 +116,10 @@ void ShownTissue::refresh(bool topology) {
     // A simulation step only moves points (STYLE.md item 8).
     if (!topology && !frame && source == Source::Simulation && m_source == Source::Simulation &&
         m_viewport.tetMeshActor().updatePositions(tissue.mesh())) {
-        if (m_surfaceVisible)
+        if (m_surfaceVisible &&
+            !m_viewport.surfaceActor().updatePositions(tissue.surface().surface()))
             m_viewport.setSurface(tissue.surface().surface(), false);
+        m_display->follow(tissue);
         m_viewport.requestRender();
         return;
     }
@@ -121,6 +132,7 @@ void ShownTissue::refresh(bool topology) {
     m_viewport.setTetMesh(tissue.mesh(), false);
     m_viewport.tetMeshActor().setTetSchemes(tissue.schemes());
     m_viewport.setSurface(tissue.surface().surface(), false);
+    m_display->show(tissue);
     if (frame)
         m_viewport.resetCamera();
     applyVisibility();

@@ -11,7 +11,9 @@
 //  - the quality panel: its mesh provider (the tet inspector looks up picked tets in the
 //    mesh on show), meshChanged() after a rebuild, the before/after comparison (current
 //    and its preview while a cut is pending, else the uncut and the current tissue) and the
-//    curve of the worst tet over the current tissue's cuts (and the pending one's).
+//    curve of the worst tet over the current tissue's cuts (and the pending one's);
+//  - its TissueDisplay (display()): the pieces, cut faces, chips, explode and highlights of
+//    the tissue on show (issue 19), with the tet picked in the quality panel outlined.
 // A new document or tissue is framed once it is shown (frameNext(), framed()).
 
 #include <QObject>
@@ -25,6 +27,7 @@ class QualityPanel;
 class SimulationController;
 class TetMesh;
 class Tissue;
+class TissueDisplay;
 class TissueSession;
 struct TissueState;
 class VtkViewport;
@@ -51,6 +54,9 @@ public:
     /// Frames the next tissue shown (a new document).
     void frameNext() { m_frameNext = true; }
 
+    /// How the pieces, cut faces and chips of the tissue on show are drawn.
+    TissueDisplay& display() { return *m_display; }
+
 signals:
     /// A tissue was shown and framed (after frameNext() or a new base).
     void framed();
@@ -69,6 +75,7 @@ private:
     SimulationController& m_simulation;
     VtkViewport& m_viewport;
     QualityPanel& m_quality;
+    TissueDisplay* m_display = nullptr;
 
     Source m_source = Source::None;
     /// The state on show (current or preview), kept alive while shown.

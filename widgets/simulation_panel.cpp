@@ -2,8 +2,11 @@
 
 #include "core/tissue/tissue.h"
 #include "scenario/scenario_document.h"
+#include "widgets/effect_parameter_editor.h"
+#include "widgets/fixed_region_editor.h"
 #include "widgets/scenario_document.h"
 #include "widgets/simulation_controller.h"
+#include "widgets/tissue_session.h"
 
 #include <QCheckBox>
 #include <QFormLayout>
@@ -37,8 +40,9 @@ QString number(double v, int precision = 3) { return QLocale().toString(v, 'g', 
 
 } // namespace
 
-SimulationPanel::SimulationPanel(ScenarioDocument& document, SimulationController& controller, QWidget* parent)
-    : QWidget(parent), m_document(document), m_controller(controller) {
+SimulationPanel::SimulationPanel(ScenarioDocument& document, TissueSession& session, SimulationController& controller,
+                                 QWidget* parent)
+    : QWidget(parent), m_document(document), m_session(session), m_controller(controller) {
     setObjectName(QStringLiteral("simulationPanel"));
     auto* layout = new QVBoxLayout(this);
 
@@ -53,9 +57,23 @@ SimulationPanel::SimulationPanel(ScenarioDocument& document, SimulationControlle
     buttons->addWidget(m_step);
     buttons->addWidget(m_reset);
     layout->addLayout(buttons);
+    m_notice = new QLabel(this);
+    m_notice->setObjectName(QStringLiteral("simNotice"));
+    m_notice->setWordWrap(true);
+    m_notice->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_notice->setStyleSheet(QStringLiteral("QLabel { color: #a40000; font-weight: bold; }"));
+    m_notice->hide();
+    layout->addWidget(m_notice);
 
+    // Each effect's check box, its parameters indented under it.
     auto* effects = new QGroupBox(tr("Effects in the scenario"), this);
     auto* effectsLayout = new QVBoxLayout(effects);
+    const auto indented = [effectsLayout](QWidget* widget) {
+        auto* row = new QHBoxLayout;
+        row->setContentsMargins(24, 0, 0, 6);
+        row->addWidget(widget, 1);
+        effectsLayout->addLayout(row);
+    };
     for (const std::string& name : knownEffectNames()) {
         auto* box = new QCheckBox(effectTitle(name));
         box->setObjectName(QStringLiteral("effect_") + QString::fromStdString(name));
@@ -63,7 +81,23 @@ SimulationPanel::SimulationPanel(ScenarioDocument& document, SimulationControlle
         m_effects[name] = box;
         connect(box, &QCheckBox::toggled, this, [this, name](bool on) {
             if (!m_syncing)
-                m_document.setEffectEnabled(QString::fromStdString(name), on);
+                onEffectToggled(name, on);
+        });
+        if (name == "fixed") {
+            // The regions are the tissue's: editable whether the effect is on or not (they
+            // also tell the tissue from the chips a cut resects).
+            m_fixedRegions = new FixedRegionEditor(m_document, m_session);
+            connect(m_fixedRegions, &FixedRegionEditor::notice, this, &SimulationPanel::setNotice);
+            indented(m_fixedRegions);
+            continue;
+        }
+        auto* editor = new EffectParameterEditor(name);
+        m_parameters[name] = editor;
+        if (editor->hasControls())
+            indented(editor);
+        connect(editor, &EffectParameterEditor::edited, this, [this, name](const QJsonObject& parameters) {
+            if (!m_syncing)
+                m_document.setEffectParameters(QString::fromStdString(name), parameters);
         });
     }
     layout->addWidget(effects);
@@ -106,6 +140,12 @@ SimulationPanel::SimulationPanel(ScenarioDocument& document, SimulationControlle
     connect(&m_controller, &SimulationController::failed, this, &SimulationPanel::updateState);
     connect(&m_document, &ScenarioDocument::effectsChanged, this, &SimulationPanel::syncEffects);
     connect(&m_document, &ScenarioDocument::documentReset, this, &SimulationPanel::syncEffects);
+    // Refusals are reported here, in place; the next edit or a new document clears them (the
+    // undo that refuses an edit comes before its report).
+    connect(&m_document, &ScenarioDocument::changed, this, [this] { setNotice(QString()); });
+    connect(&m_session, &TissueSession::editRefused, this, [this](const QString& reason) {
+        setNotice(tr("The last edit was undone: %1").arg(reason));
+    });
     syncEffects();
     updateState();
 }
@@ -115,10 +155,47 @@ QCheckBox* SimulationPanel::effectBox(const std::string& name) const {
     return it == m_effects.end() ? nullptr : it->second;
 }
 
+EffectParameterEditor* SimulationPanel::parameterEditor(const std::string& name) const {
+    const auto it = m_parameters.find(name);
+    return it == m_parameters.end() ? nullptr : it->second;
+}
+
+QString SimulationPanel::notice() const {
+    return m_notice->text();
+}
+
+void SimulationPanel::setNotice(const QString& text) {
+    m_notice->setText(text);
+    m_notice->setVisible(!text.isEmpty());
+}
+
+void SimulationPanel::onEffectToggled(const std::string& name, bool on) {
+    const QString effect = QString::fromStdString(name);
+    if (name == "fixed" && on && m_document.fixedRegions().empty()) {
+        // The effect needs a region: the tissue's base, once the tissue is known.
+        const std::optional<FixedRegion> base = m_fixedRegions->baseRegionOfTissue();
+        if (!base) {
+            setNotice(tr("Fixed regions: the tissue is not loaded yet, so its base cannot be anchored. "
+                         "Try again once it is shown."));
+            syncEffects();
+            return;
+        }
+        m_document.fixRegion(*base);
+        return;
+    }
+    m_document.setEffectEnabled(effect, on);
+}
+
 void SimulationPanel::syncEffects() {
     m_syncing = true;
     for (auto& [name, box] : m_effects)
         box->setChecked(m_document.isEffectEnabled(QString::fromStdString(name)));
+    for (auto& [name, editor] : m_parameters) {
+        const EffectSpec* spec = m_document.scenario().findEffect(name);
+        editor->setEnabled(spec != nullptr);
+        if (spec)
+            editor->setParameters(spec->parameters);
+    }
     m_syncing = false;
 }
 

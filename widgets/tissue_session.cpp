@@ -20,9 +20,10 @@ namespace resect {
 
 namespace {
 
-/// What the base is made from: the first tissue's source fields, material and fixed regions
-/// (its anchors), and the folder relative paths are resolved against. Two documents with
-/// equal keys give the same base.
+/// What the base is loaded from: the first tissue's source fields and material, and the
+/// folder relative paths are resolved against. Two documents with equal keys load the same
+/// mesh; their anchors (the nodes in the fixed regions) are set on it apart (anchoredBase),
+/// so editing a fixed region never re-meshes.
 QString tissueKey(const Scenario& scenario) {
     if (scenario.tissues.empty())
         return {};
@@ -35,10 +36,6 @@ QString tissueKey(const Scenario& scenario) {
     key["density"] = t.material.density;
     key["stiffness"] = t.material.stiffness;
     key["damping"] = t.material.damping;
-    QJsonArray fixed;
-    for (const FixedRegion& r : t.fixedRegions)
-        fixed.append(QJsonArray{r.min.x(), r.min.y(), r.min.z(), r.max.x(), r.max.y(), r.max.z()});
-    key["fixed_regions"] = fixed;
     key["base"] = QString::fromStdString(scenario.baseDir);
     return QString::fromUtf8(QJsonDocument(key).toJson(QJsonDocument::Compact));
 }
@@ -57,6 +54,21 @@ Status makeBaseTissue(const Scenario& scenario, TetMesh mesh, TriangleSurface su
         !s.ok())
         return s;
     return makeTissue(plan, out);
+}
+
+/// `base` with the anchors of `scenario`'s fixed regions (regionAnchors): `base` itself when
+/// it has them already, else a copy re-anchored (Tissue::setAnchors: the tissue makeBaseTissue
+/// would make) under a new base id, so that every state derived from it is told apart.
+Status anchoredBase(const Scenario& scenario, std::shared_ptr<const TissueState>& base) {
+    const FixedSelection anchors = regionAnchors(scenario.tissues.front(), base->mesh());
+    if (anchors.nodes == base->tissue.anchors().nodes())
+        return Status::success();
+    auto state = std::make_shared<TissueState>(*base);
+    if (Status s = state->tissue.setAnchors(anchors); !s.ok())
+        return s;
+    state->applied.baseId = newBaseId();
+    base = std::move(state);
+    return Status::success();
 }
 
 /// What a state is derived from, comparable with ==: the scenario without its metadata (an
@@ -88,6 +100,9 @@ TissueSession::TissueSession(ScenarioDocument& document, QObject* parent)
     // Effects do not change the tissue, but a state with bad effects would not load again.
     connect(&m_document, &ScenarioDocument::effectsChanged, this,
             [this] { schedule(false, false); });
+    // Fixed regions change the anchors (what a cut resects) and what the fixed effect holds.
+    connect(&m_document, &ScenarioDocument::fixedRegionsChanged, this,
+            [this] { schedule(false, true); });
     if (!m_document.scenario().tissues.empty())
         onDocumentReset();
 }
@@ -332,6 +347,31 @@ TissueSession::compute(const Request& request, std::shared_ptr<const TissueState
         result.key = tissueKey(scenario);
     }
 
+    // The anchors of the document's fixed regions: an edit of a region re-anchors the loaded
+    // mesh instead of loading it again, and every cut is applied again (anchors decide what
+    // a cut resects).
+    {
+        const std::shared_ptr<const TissueState> loaded = base;
+        if (Status s = anchoredBase(scenario, base); !s.ok()) {
+            result.error = QString::fromStdString("tissue '" + tissue.name + "': " + s.message());
+            result.loadFailed = result.baseChanged;
+            return result;
+        }
+        if (base != loaded) {
+            current.reset();
+            result.base = base;
+            result.baseReanchored = !result.baseChanged;
+        }
+    }
+
+    // What starting the simulation would refuse, as replay would (the fixed effect holding no
+    // node, parameters an effect does not take): such a state does not derive either.
+    if (Status s = checkSimulation(scenario, tissue, base->tissue); !s.ok()) {
+        result.error = QString::fromStdString(s.message());
+        result.loadFailed = result.baseChanged;
+        return result;
+    }
+
     if (request.reapply || !current || result.baseChanged) {
         std::vector<ScenarioCut> cuts;
         if (Status s = scenarioCuts(scenario, cuts); !s.ok()) {
@@ -360,6 +400,12 @@ TissueSession::compute(const Request& request, std::shared_ptr<const TissueState
         state->settle();
         result.current = state;
         result.currentChanged = true;
+    }
+    // The base the states derive from, also when it was not loaded for them: a trial's is
+    // adopted with them (a new document on the tissue already loaded keeps its base).
+    if (!result.base) {
+        result.base = base;
+        result.key = tissueKey(scenario);
     }
     return result;
 }
@@ -394,6 +440,10 @@ void TissueSession::finish(Result result) {
                 m_baseKey = result.key;
                 emitBase = true;
             }
+            // The same mesh with other anchors: the views keep their framing (only current,
+            // derived from it, is announced).
+            if (result.baseReanchored && result.base && result.error.isEmpty())
+                m_base = result.base;
             if (!result.error.isEmpty()) {
                 m_error = result.error;
                 if (result.loadFailed) {

@@ -7,7 +7,9 @@
 //  - base():    the scenario's first tissue, loaded or meshed (scenario_run.h loadTissue) and
 //               made into a Tissue as replay makes it (planLoadedTissue, makeTissue: the
 //               embedded high-resolution surface bound, the fixed regions' nodes anchored);
-//               no cuts;
+//               no cuts. An edit of the fixed regions re-anchors the loaded tissue
+//               (Tissue::setAnchors) instead of loading it again, and does not announce a new
+//               base (the views keep their framing); every cut is applied again;
 //  - current(): a copy of base with every cut of the document applied in replay order
 //               (strokes, then sweeps; scenario_sweeps.h scenarioCuts) by Tissue::cut with
 //               the document's cut settings, in the rest configuration (the simulation runs
@@ -24,7 +26,9 @@
 // Every state of the document is derived as replay would derive it, so the document never
 // keeps one that does not: a state is first validated as loading it would be
 // (validateScenario: also what saving checks, so a derived state can be saved and read back),
-// then its cuts are applied; effect edits are validated too. When a state of the document
+// then its cuts are applied; effect edits are validated too, and every state is checked as
+// starting replay's simulation would check it (checkSimulation, scenario_run.h: the fixed
+// effect must hold a node, every effect must take its parameters). When a state of the document
 // fails, the edits that led to it are undone back to the nearest earlier state that derived
 // (ScenarioDocument::revertTo; they are dropped from the undo stack) and editRefused() says
 // why; only a state with no such earlier state (a document opened directly, not through a
@@ -133,6 +137,7 @@ private:
         Scenario scenario; ///< what was derived
         std::shared_ptr<const TissueState> base, current;
         bool baseChanged = false, currentChanged = false;
+        bool baseReanchored = false; ///< base is the loaded one with the anchors of other regions
         bool loadFailed = false, cancelled = false;
         QString key; ///< tissueKey of a newly loaded base
         QString error;

@@ -67,6 +67,10 @@ struct TissueState {
     /// after each cut since base, in order (not cleared by clearCutFigures: a preview's ends
     /// with its pending cut). With tissue.inputWorstRatio(), the curve of the quality dock.
     std::vector<double> worstRatios;
+    /// The tets with the smallest own stable time step (tetStableTimeSteps,
+    /// core/mesh/stable_time_step.h: the ones that limit stableDt), worst first, at most a few;
+    /// filled only for a preview that warns (CutPreview::warnings), else empty.
+    std::vector<int> stepLimitingTets;
     QString tissueName;
 
     const TetMesh& mesh() const { return tissue.mesh(); }

@@ -72,8 +72,14 @@ void VtkViewport::createGlWidget() {
     // background alpha of 0 would let the window colour show through.
     renderer->SetBackgroundAlpha(1.0);
     renderer->SetActiveCamera(m_camera.camera());
-    renderer->AddActor(m_tetMesh.actor());
-    renderer->AddActor(m_surface.actor());
+    for (vtkProp* prop : m_tetMesh.props())
+        renderer->AddViewProp(prop);
+    for (vtkProp* prop : m_surface.props())
+        renderer->AddViewProp(prop);
+    for (vtkProp* prop : m_chips.props())
+        renderer->AddViewProp(prop);
+    for (vtkProp* prop : m_chipSurfaces.props())
+        renderer->AddViewProp(prop);
     for (vtkProp* prop : m_props)
         renderer->AddViewProp(prop);
     connect(m_glWidget, &VtkGlWidget::frameRendered, this, &VtkViewport::frameRendered);
@@ -147,6 +153,8 @@ void VtkViewport::setSurface(const TriangleSurface& surface, bool frameIfAlone) 
 void VtkViewport::clear() {
     m_tetMesh.clear();
     m_surface.clear();
+    m_chips.clear();
+    m_chipSurfaces.clear();
     m_nodeCount = m_tetCount = m_triangleCount = 0;
     updatePlaceholderText();
     requestRender();
@@ -182,7 +190,8 @@ void VtkViewport::setTool(ViewportTool* tool) {
 }
 
 Bounds VtkViewport::sceneBounds() const {
-    return unite(m_tetMesh.bounds(), m_surface.bounds());
+    return unite(unite(m_tetMesh.bounds(), m_surface.bounds()),
+                 unite(m_chips.bounds(), m_chipSurfaces.bounds()));
 }
 
 void VtkViewport::resetCamera() {
@@ -197,6 +206,11 @@ void VtkViewport::resetCamera() {
 void VtkViewport::restoreStartingView() {
     m_camera.setViewDirection(kStartingDirection, kStartingUp);
     resetCamera();
+}
+
+void VtkViewport::sceneExtentChanged() {
+    m_camera.fitClippingRange(sceneBounds());
+    requestRender();
 }
 
 bool VtkViewport::hasRendering() const {

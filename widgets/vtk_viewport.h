@@ -54,6 +54,11 @@ public:
     TetMeshActor& tetMeshActor() { return m_tetMesh; }
     const TetMeshActor& tetMeshActor() const { return m_tetMesh; }
     SurfaceActor& surfaceActor() { return m_surface; }
+    /// The resected chips (Tissue::chips()) as tets and as surfaces, drawn apart from the
+    /// tissue (TissueDisplay fills them); in the scene's bounds.
+    TetMeshActor& chipsActor() { return m_chips; }
+    const TetMeshActor& chipsActor() const { return m_chips; }
+    SurfaceActor& chipSurfacesActor() { return m_chipSurfaces; }
 
     /// Adds a prop (sweep surface, tool, handles, legend, ...) to the scene; not owned, the
     /// caller keeps it alive until removeProp(). Works without rendering too (kept for when
@@ -71,6 +76,9 @@ public:
     /// The starting view (the oblique default direction, z up), framing the scene: what
     /// View > Reset camera does. resetCamera() keeps the current direction.
     void restoreStartingView();
+    /// The scene's extent changed without a new mesh (e.g. exploded pieces): fits the camera's
+    /// clipping range to it, without moving the camera, and renders.
+    void sceneExtentChanged();
     /// The camera used for rendering and for the camera maths (picking, strokes).
     vtkCamera* camera() const { return m_camera.camera(); }
     /// Bounds of everything shown; invalid (min > max) when the scene is empty.
@@ -114,6 +122,8 @@ private:
     OrbitCamera m_camera;
     TetMeshActor m_tetMesh;
     SurfaceActor m_surface;
+    TetMeshActor m_chips;
+    SurfaceActor m_chipSurfaces;
     int m_nodeCount = 0;
     int m_tetCount = 0;
     int m_triangleCount = 0;

@@ -1,6 +1,7 @@
 // resect-studio: the desktop editor.
 //
 //     resect-studio [--sample polyp|myoma] [--open FILE] [--screenshot PNG] [--lang CODE]
+//                   [--color-by quality|piece] [--resected shown|dimmed|hidden] [--explode F]
 //
 // --lang en|de|fr sets the interface language for this run; without it the preference
 // saved from the Language menu applies, else the system's language (widgets/language.h).
@@ -8,12 +9,16 @@
 // --screenshot loads, shows the window, waits for the 3-D view's first frame, writes the
 // window image atomically and exits 0. Bad input: one line on stderr, exit 2; an internal
 // failure (timeout, image not written): exit 1.
+// --color-by, --resected and --explode set the Display toolbar's colouring, resected chips
+// and explode factor (0 to 1.5) for this run (widgets/tissue_display.h).
 
 #include "main_window.h"
 
 #include "core/mesher/samples.h"
 #include "widgets/language.h"
 #include "widgets/opengl_support.h"
+#include "widgets/shown_tissue.h"
+#include "widgets/tissue_display.h"
 #include "widgets/tissue_session.h"
 #include "widgets/vtk_viewport.h"
 
@@ -111,10 +116,27 @@ int main(int argc, char* argv[]) {
         QStringLiteral("Interface language (%1); default: the saved preference, else the system's.")
             .arg(resect::availableLanguages().join(QLatin1Char('|'))),
         QStringLiteral("code"));
+    const QCommandLineOption colorByOption(
+        QStringLiteral("color-by"),
+        QStringLiteral("Colour the tets by quality (default) or piece."),
+        QStringLiteral("quality|piece"));
+    const QCommandLineOption resectedOption(
+        QStringLiteral("resected"),
+        QStringLiteral("Resected pieces shown, dimmed (default) or hidden."),
+        QStringLiteral("shown|dimmed|hidden"));
+    const QCommandLineOption explodeOption(
+        QStringLiteral("explode"),
+        QStringLiteral("Move the pieces apart by this factor of their distance to the centre "
+                       "(0 to %1).")
+            .arg(resect::TissueDisplay::kMaxExplode),
+        QStringLiteral("factor"));
     parser.addOption(langOption);
     parser.addOption(sampleOption);
     parser.addOption(openOption);
     parser.addOption(screenshotOption);
+    parser.addOption(colorByOption);
+    parser.addOption(resectedOption);
+    parser.addOption(explodeOption);
 
     if (!parser.parse(QApplication::arguments())) {
         printError(parser.errorText());
@@ -183,9 +205,51 @@ int main(int argc, char* argv[]) {
     }
     const bool screenshot = !screenshotPath.isEmpty();
 
+    // The display settings (validated before any window exists).
+    std::optional<resect::TetColorMode> colorMode;
+    if (parser.isSet(colorByOption)) {
+        const QString v = parser.value(colorByOption);
+        if (v == QLatin1String("quality"))
+            colorMode = resect::TetColorMode::Quality;
+        else if (v == QLatin1String("piece"))
+            colorMode = resect::TetColorMode::Piece;
+        else {
+            printError(QStringLiteral("--color-by %1: choose quality or piece").arg(v));
+            return kExitBadInput;
+        }
+    }
+    std::optional<resect::TissueDisplay::Resected> resected;
+    if (parser.isSet(resectedOption)) {
+        const QString v = parser.value(resectedOption);
+        const QStringList names{QStringLiteral("shown"), QStringLiteral("dimmed"), QStringLiteral("hidden")};
+        if (!names.contains(v)) {
+            printError(QStringLiteral("--resected %1: choose shown, dimmed or hidden").arg(v));
+            return kExitBadInput;
+        }
+        resected = static_cast<resect::TissueDisplay::Resected>(names.indexOf(v));
+    }
+    double explode = 0;
+    if (parser.isSet(explodeOption)) {
+        bool ok = false;
+        explode = parser.value(explodeOption).toDouble(&ok);
+        if (!ok || !(explode >= 0 && explode <= resect::TissueDisplay::kMaxExplode)) {
+            printError(QStringLiteral("--explode %1: not a number from 0 to %2")
+                           .arg(parser.value(explodeOption))
+                           .arg(resect::TissueDisplay::kMaxExplode));
+            return kExitBadInput;
+        }
+    }
+
     resect::MainWindow window;
     window.resize(1280, 800);
     window.setErrorDialogsEnabled(!screenshot);
+    resect::TissueDisplay& display = window.shownTissue().display();
+    if (colorMode)
+        display.setColorMode(*colorMode);
+    if (resected)
+        display.setResected(*resected);
+    if (explode > 0)
+        display.setExplode(explode);
 
     if (screenshot) {
         QObject::connect(&window, &resect::MainWindow::loadFailed, &app,

@@ -4,8 +4,11 @@
 #include "widgets/authoring_panel.h"
 #include "widgets/cut_panel.h"
 #include "widgets/cut_preview.h"
+#include "widgets/display_toolbar.h"
 #include "widgets/document_opener.h"
 #include "widgets/export_runner.h"
+#include "widgets/fixed_region_editor.h"
+#include "widgets/fixed_region_tool.h"
 #include "widgets/language.h"
 #include "widgets/quality_panel.h"
 #include "widgets/scenario_document.h"
@@ -77,7 +80,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setCentralWidget(m_viewport);
 
     m_cutPanel = new CutPanel(*m_document, *m_session, *m_preview);
-    m_simulationPanel = new SimulationPanel(*m_document, *m_simulation);
+    m_simulationPanel = new SimulationPanel(*m_document, *m_session, *m_simulation);
     m_authoringPanel = new AuthoringPanel(m_viewport);
     m_accuracyPanel = new AccuracyPanel;
     m_qualityPanel = new QualityPanel;
@@ -152,6 +155,21 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_document, &ScenarioDocument::cutSettingsChanged, this,
             [this] { m_accuracyPanel->setBaseCutSettings(m_document->scenario().cut); });
     connect(m_accuracyPanel, &AccuracyPanel::adoptRequested, m_document, &ScenarioDocument::setCutSettings);
+    // Fixed regions placed in the view: the simulation dock's "Place in view" and the tool.
+    auto* regionTool = new FixedRegionTool(*m_document, m_viewport, this);
+    connect(m_simulationPanel->fixedRegionEditor(), &FixedRegionEditor::editInViewToggled, regionTool,
+            &FixedRegionTool::setActive);
+    connect(regionTool, &FixedRegionTool::activeChanged, m_simulationPanel->fixedRegionEditor(),
+            &FixedRegionEditor::setEditingInView);
+    // A preview's warning names the tets that limit its time step: one click shows one in the
+    // quality dock's tet inspector.
+    connect(m_cutPanel, &CutPanel::inspectTetRequested, this, [this](int tet) {
+        m_qualityPanel->selectTet(tet);
+        if (auto* dock = findChild<QDockWidget*>(QStringLiteral("qualityDock"))) {
+            dock->show();
+            dock->raise();
+        }
+    });
     connect(m_cutPanel, &CutPanel::applyFailed, this,
             [this](const QString& message) { statusBar()->showMessage(message, 10000); });
     connect(m_preview, &CutPreview::changed, this, &MainWindow::updateApplyAction);
@@ -258,6 +276,12 @@ void MainWindow::createActions() {
     m_shown->setSurfaceVisible(m_showSurface->isChecked());
     connect(m_showTets, &QAction::toggled, m_shown, &ShownTissue::setTetsVisible);
     connect(m_showSurface, &QAction::toggled, m_shown, &ShownTissue::setSurfaceVisible);
+    // Seeing the cut (issue 19): colour by piece, cut faces, chips, explode, above the view.
+    auto* displayBar = new DisplayToolBar(m_shown->display(), this);
+    addToolBar(Qt::TopToolBarArea, displayBar);
+    m_viewMenu->addMenu(displayBar->menu());
+    displayBar->toggleViewAction()->setText(tr("Display &toolbar"));
+    m_viewMenu->addAction(displayBar->toggleViewAction());
     m_viewMenu->addSeparator();
 
     QMenu* language = menuBar()->addMenu(tr("&Language"));

@@ -6,7 +6,9 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
 namespace resect {
 namespace {
@@ -225,6 +227,81 @@ EigenEstimate largestEigenvalue(const StiffnessProduct& stiffness, std::span<con
 void applyRestStiffness(const TetMesh& mesh, const Material& material, std::span<const Vec3> x,
                         std::span<Vec3> y, bool areaTerm) {
     apply(mesh, buildRestStiffness(mesh, material, areaTerm), x, y);
+}
+
+std::vector<double> tetStableTimeSteps(const TetMesh& mesh, const Material& material,
+                                       const StableTimeStepOptions& options) {
+    using Mat12 = Eigen::Matrix<double, 12, 12>;
+    std::vector<double> result(mesh.tetCount(), std::numeric_limits<double>::infinity());
+    const auto m = mesh.masses();
+    // Boundary faces by tet (area term only).
+    std::vector<std::vector<Tri>> faces;
+    if (options.areaTerm) {
+        faces.resize(mesh.tetCount());
+        for (const BoundaryFace& f : boundaryFaces(mesh))
+            faces[f.tet].push_back(f.nodes);
+    }
+    // K += k a a^T for a gradient a over the tet's corners (local indices).
+    const auto addRankOne = [](Mat12& K, double k, const std::array<int, 4>& corner,
+                               const std::array<Vec3, 4>& a, int count) {
+        for (int i = 0; i < count; ++i)
+            for (int j = 0; j < count; ++j)
+                K.block<3, 3>(3 * corner[i], 3 * corner[j]) += k * a[i] * a[j].transpose();
+    };
+    for (int t = 0; t < mesh.tetCount(); ++t) {
+        const Tet& q = mesh.tet(t);
+        bool massless = false;
+        for (int i = 0; i < 4; ++i)
+            massless = massless || !(m[q[i]] > 0);
+        if (massless)
+            continue;
+        Mat12 K = Mat12::Zero();
+        // Springs (Eq. 4): k_s (n n^T) (x) [[1,-1],[-1,1]].
+        for (const auto& e : kTetEdges) {
+            const Vec3 d = mesh.ref(q[e[1]]) - mesh.ref(q[e[0]]);
+            const double l2 = d.squaredNorm();
+            if (!(l2 > 0))
+                continue;
+            const Vec3 n = d / std::sqrt(l2);
+            addRankOne(K, material.stiffness * (m[q[e[0]]] + m[q[e[1]]]) / l2, {e[0], e[1], 0, 0},
+                       {Vec3(-n), n, Vec3::Zero(), Vec3::Zero()}, 2);
+        }
+        // Volume term: k_v g g^T.
+        const Vec3 &p0 = mesh.ref(q[0]), &p1 = mesh.ref(q[1]), &p2 = mesh.ref(q[2]), &p3 = mesh.ref(q[3]);
+        std::array<Vec3, 4> g;
+        g[1] = (p2 - p0).cross(p3 - p0) / 6.0;
+        g[2] = (p3 - p0).cross(p1 - p0) / 6.0;
+        g[3] = (p1 - p0).cross(p2 - p0) / 6.0;
+        g[0] = -(g[1] + g[2] + g[3]);
+        const double v0 = mesh.referenceVolume(t);
+        const double msum = m[q[0]] + m[q[1]] + m[q[2]] + m[q[3]];
+        if (v0 != 0)
+            addRankOne(K, material.stiffness * msum / (v0 * v0), {0, 1, 2, 3}, g, 4);
+        // Area terms of its boundary faces: k_a a a^T.
+        if (options.areaTerm)
+            for (const Tri& f : faces[t]) {
+                std::array<int, 4> corner{};
+                for (int i = 0; i < 3; ++i)
+                    corner[i] = static_cast<int>(std::find(q.begin(), q.end(), f[i]) - q.begin());
+                const Vec3 &a0 = mesh.ref(f[0]), &a1 = mesh.ref(f[1]), &a2 = mesh.ref(f[2]);
+                const Vec3 n = (a1 - a0).cross(a2 - a0);
+                const double area = 0.5 * n.norm();
+                if (!(area > 0))
+                    continue;
+                const Vec3 h = n / (4 * area);
+                addRankOne(K, material.stiffness * (m[f[0]] + m[f[1]] + m[f[2]]) / (area * area), corner,
+                           {h.cross(a2 - a1), h.cross(a0 - a2), h.cross(a1 - a0), Vec3::Zero()}, 3);
+            }
+        // M^-1/2 K M^-1/2, symmetric.
+        for (int i = 0; i < 12; ++i)
+            for (int j = 0; j < 12; ++j)
+                K(i, j) /= std::sqrt(m[q[i / 3]] * m[q[j / 3]]);
+        const double lambda =
+            Eigen::SelfAdjointEigenSolver<Mat12>(K, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+        if (lambda > 0 && std::isfinite(lambda))
+            result[t] = options.safety * 2 / std::sqrt(lambda);
+    }
+    return result;
 }
 
 StableTimeStep stableTimeStep(const TetMesh& mesh, const Material& material,

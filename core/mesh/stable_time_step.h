@@ -51,6 +51,18 @@ struct StableTimeStepOptions {
 StableTimeStep stableTimeStep(const TetMesh& mesh, const Material& material,
                               const StableTimeStepOptions& options = {});
 
+/// Per tet, the stable step of its own terms alone: dt_t = safety * 2 / sqrt(lambda_t), where
+/// lambda_t is the largest eigenvalue of M_t^-1 K_t, K_t the 12x12 linearised stiffness of the
+/// tet's six edge springs (each at its full k_s), its volume term and, with options.areaTerm,
+/// the area terms of its boundary faces, and M_t the lumped masses of its four nodes. Not a
+/// bound on the mesh's step (terms shared by several tets are counted in each), but where the
+/// mesh's highest frequency lives: the tets with the smallest dt_t are the ones that limit
+/// stableTimeStep (a sliver's volume term, a short edge between light nodes). For a mesh of one
+/// tet it is stableTimeStep's dt. +inf for a tet with no stiffness or a massless node. #tets,
+/// O(tets) (options.maxIterations and relativeTolerance are not used: each is solved exactly).
+std::vector<double> tetStableTimeSteps(const TetMesh& mesh, const Material& material,
+                                       const StableTimeStepOptions& options = {});
+
 /// The linearised stiffness operator y = K x at the reference configuration (x, y: #nodes
 /// displacements). Exposed so that tests can run the linear model the estimate is about.
 void applyRestStiffness(const TetMesh& mesh, const Material& material,

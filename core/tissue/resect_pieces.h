@@ -11,6 +11,7 @@
 
 #include <Eigen/Geometry>
 
+#include <cstdint>
 #include <string>
 #include <span>
 #include <vector>
@@ -43,6 +44,10 @@ struct Chip {
     double volume = 0;        ///< reference volume, mm^3
     double mass = 0;          ///< g
     int cut = 0;              ///< the cut (counted from 1) that resected it
+    /// The tissue's cut marks of its nodes and tets (Tissue::onCutSurface, Tissue::tetCuts),
+    /// carried over by Tissue when it resected the piece; empty when made by resectPieces alone.
+    std::vector<std::uint8_t> onCutSurface;
+    std::vector<int> tetCuts;
     RigidBody body;
 };
 

@@ -55,6 +55,8 @@ Tissue& Tissue::operator=(Tissue&& other) noexcept {
         m_material = other.m_material;
         m_anchors = std::move(other.m_anchors);
         m_schemes = std::move(other.m_schemes);
+        m_onCut = std::move(other.m_onCut);
+        m_tetCuts = std::move(other.m_tetCuts);
         m_cuts = other.m_cuts;
         m_sim = std::move(other.m_sim);
         m_setup = std::move(other.m_setup);
@@ -76,7 +78,8 @@ Tissue& Tissue::operator=(Tissue&& other) noexcept {
 Tissue::Tissue(const Tissue& other)
     : m_mesh(std::make_unique<TetMesh>(*other.m_mesh)),
       m_cutter(std::make_unique<HybridCutter>(*other.m_cutter, *m_mesh)), m_surface(other.m_surface),
-      m_material(other.m_material), m_anchors(other.m_anchors), m_schemes(other.m_schemes), m_cuts(other.m_cuts),
+      m_material(other.m_material), m_anchors(other.m_anchors), m_schemes(other.m_schemes),
+      m_onCut(other.m_onCut), m_tetCuts(other.m_tetCuts), m_cuts(other.m_cuts),
       m_resected(other.m_resected), m_chips(other.m_chips), m_resectedVolume(other.m_resectedVolume),
       m_resectedMass(other.m_resectedMass), m_floor(other.m_floor), m_inputWorstRatio(other.m_inputWorstRatio),
       m_inputShortestEdge(other.m_inputShortestEdge), m_pieces(std::make_unique<PiecesCache>()) {
@@ -102,6 +105,8 @@ Status Tissue::create(TetMesh mesh, TriangleSurface surface, const Material& mat
         if (Status s = t.m_surface.bind(mesh, std::move(surface)); !s.ok())
             return Status::error("binding the surface: " + s.message());
     t.m_schemes.assign(mesh.tetCount(), Scheme::None);
+    t.m_onCut.assign(mesh.nodeCount(), 0);
+    t.m_tetCuts.assign(mesh.tetCount(), 0);
     t.m_floor = std::numeric_limits<double>::infinity();
     for (const Vec3& p : mesh.positions())
         t.m_floor = std::min(t.m_floor, p.z());
@@ -115,6 +120,20 @@ Status Tissue::create(TetMesh mesh, TriangleSurface surface, const Material& mat
     *t.m_mesh = std::move(mesh);
     t.m_cutter = std::make_unique<HybridCutter>(*t.m_mesh);
     out = std::move(t);
+    return Status::success();
+}
+
+Status Tissue::setAnchors(const FixedSelection& anchors) {
+    if (empty())
+        return Status::error("the tissue has no tets");
+    if (m_cuts > 0 || !m_chips.empty())
+        return Status::error("the anchors of a cut tissue follow its cuts and cannot be replaced");
+    if (m_sim)
+        return Status::error("the anchors of a simulated tissue cannot be replaced");
+    Anchors replaced;
+    if (Status s = Anchors::create(*m_mesh, anchors, replaced); !s.ok())
+        return s;
+    m_anchors = std::move(replaced);
     return Status::success();
 }
 
@@ -159,6 +178,17 @@ void Tissue::updateSchemes(const CutChanges& changes) {
         const Scheme s = changes.schemeOf(parent);
         m_schemes[changes.firstNewTet + static_cast<int>(i)] = s != Scheme::None ? s : m_schemes[parent];
     }
+}
+
+void Tissue::markCut(const CutChanges& changes, int cut) {
+    m_onCut.resize(m_mesh->nodeCount(), 0);
+    for (int n : changes.cutSurfaceNodes)
+        m_onCut[n] = 1;
+    m_tetCuts.resize(m_mesh->tetCount(), 0);
+    for (int t : changes.modifiedTets)
+        m_tetCuts[t] = cut;
+    for (int t = changes.firstNewTet; t < m_mesh->tetCount(); ++t)
+        m_tetCuts[t] = cut;
 }
 
 Status Tissue::cut(const SweepSurface& sweep, const CutOptions& requested, TissueCut* out,
@@ -214,6 +244,7 @@ Status Tissue::cut(const SweepSurface& sweep, const CutOptions& requested, Tissu
     // 5. Anchors, schemes, pieces.
     m_anchors.applyCut(*m_mesh, cut.changes);
     updateSchemes(cut.changes);
+    markCut(cut.changes, m_cuts + 1);
     {
         std::lock_guard lock(m_pieces->mutex);
         m_pieces->components.reset();
@@ -270,6 +301,18 @@ void Tissue::resect(TissueCut& result, std::vector<int>& seeds, bool& rebuild) {
         chip.surface = std::move(surfaces[c]);
         makeRigidBody(chip);
     }
+    // The chips take their cut marks along (resectPieces numbers a chip's nodes and tets in
+    // the order of the tissue's; `comp` still describes the mesh before the resection).
+    std::vector<int> chipOfComponent(comp.count, -1);
+    for (std::size_t t = 0; t < r.pieceOfTet.size(); ++t)
+        if (const int c = r.pieceOfTet[t]; c >= 0) {
+            chipOfComponent[comp.tetComponent[t]] = c;
+            m_chips[r.firstChip + c].tetCuts.push_back(m_tetCuts[t]);
+        }
+    for (std::size_t n = 0; n < comp.nodeComponent.size(); ++n)
+        if (const int c = comp.nodeComponent[n]; c >= 0 && chipOfComponent[c] >= 0)
+            m_chips[r.firstChip + chipOfComponent[c]].onCutSurface.push_back(m_onCut[n]);
+
     renumber(r.newTet, r.newNode);
     std::vector<int> kept;
     for (int n : seeds)
@@ -349,6 +392,16 @@ void Tissue::renumber(const std::vector<int>& newTet, const std::vector<int>& ne
         if (newTet[t] >= 0)
             schemes[newTet[t]] = m_schemes[t];
     m_schemes = std::move(schemes);
+    std::vector<int> tetCuts(m_mesh->tetCount(), 0);
+    for (std::size_t t = 0; t < newTet.size() && t < m_tetCuts.size(); ++t)
+        if (newTet[t] >= 0)
+            tetCuts[newTet[t]] = m_tetCuts[t];
+    m_tetCuts = std::move(tetCuts);
+    std::vector<std::uint8_t> onCut(m_mesh->nodeCount(), 0);
+    for (std::size_t n = 0; n < newNode.size() && n < m_onCut.size(); ++n)
+        if (newNode[n] >= 0)
+            onCut[newNode[n]] = std::max(onCut[newNode[n]], m_onCut[n]);
+    m_onCut = std::move(onCut);
     m_cutter->refreshSpatialIndex();
     m_indexStale = false;
     std::lock_guard lock(m_pieces->mutex);

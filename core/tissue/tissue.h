@@ -14,7 +14,7 @@
 //   2. the tets are cut (HybridCutter: section 4.1's steps, masses by Eq. 3);
 //   3. the embedded surface is cut and closed (section 5.1, 5.2) and its vertices re-bound;
 //   4. the simulator's effects follow the change list locally (Simulator::applyCut);
-//   5. anchors, schemes and pieces follow;
+//   5. anchors, schemes, pieces and the cut marks (onCutSurface, tetCuts) follow;
 //   6. pieces that no longer touch an anchored node are resected (resect_pieces.h) when the
 //      tissue's ResectedPieces says so: they leave the tet mesh and its surface and become
 //      chips (removed, or rigid bodies that fall); the simulation is rebuilt on what remains;
@@ -37,6 +37,7 @@
 #include "core/status.h"
 #include "core/tissue/resect_pieces.h"
 
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -100,6 +101,14 @@ public:
     const Anchors& anchors() const { return m_anchors; }
     /// Per tet: the scheme (Figure 4) of the cut that produced it; None for tets of the input.
     const std::vector<Scheme>& schemes() const { return m_schemes; }
+    /// Per node: 1 if the node lies on a surface a cut made (CutChanges::cutSurfaceNodes of
+    /// every cut so far: cut nodes, split points and their copies), else 0. A boundary face
+    /// whose three nodes are marked is a cut face (what the views draw as the cut).
+    const std::vector<std::uint8_t>& onCutSurface() const { return m_onCut; }
+    /// Per tet: the cut (counted from 1) that last produced or changed it (CutChanges: its
+    /// new tets and modified tets), 0 for tets untouched since create(). The last cut's
+    /// touched tets are those equal to cutCount().
+    const std::vector<int>& tetCuts() const { return m_tetCuts; }
     /// Connected components of the tets (computed on the first call after a cut; safe to call
     /// from several threads on a shared const tissue).
     const Components& pieces() const;
@@ -111,6 +120,12 @@ public:
     /// the yardsticks of the improvement step.
     double inputWorstRatio() const { return m_inputWorstRatio; }
     double inputShortestEdge() const { return m_inputShortestEdge; }
+
+    /// Replaces the anchored nodes of a tissue that has not been cut and does not simulate (the
+    /// scene's fixed regions were edited): the tissue is then exactly what create() makes with
+    /// `anchors`. Errors (the tissue unchanged): a cut or simulated tissue, or what
+    /// Anchors::create refuses.
+    Status setAnchors(const FixedSelection& anchors);
 
     /// What happens to pieces that no longer touch an anchored node after a cut (Keep by
     /// default; nothing is resected without anchors).
@@ -155,14 +170,16 @@ private:
     void followPositions();
     /// Step 5 of cut(): the scheme of every tet the cut produced or changed.
     void updateSchemes(const CutChanges& changes);
+    /// Step 5 of cut(): the cut marks (onCutSurface, tetCuts) of what cut number `cut` made.
+    void markCut(const CutChanges& changes, int cut);
     /// Step 6 of cut(): resected pieces leave the tissue; fills the result's counts. `seeds`
     /// (nodes) are renumbered, the ones resected dropped; `rebuild` is set if the simulation
     /// must be rebuilt.
     void resect(TissueCut& result, std::vector<int>& seeds, bool& rebuild);
     /// Step 7 of cut(): improvement around `seeds`.
     void improve(TissueCut& result, const std::vector<int>& seeds, const CutOptions& options, bool& rebuild);
-    /// Anchors, schemes, the spatial index and the pieces follow a renumbering of the tets and
-    /// nodes (old -> new, -1: gone).
+    /// Anchors, schemes, cut marks, the spatial index and the pieces follow a renumbering of
+    /// the tets and nodes (old -> new, -1: gone).
     void renumber(const std::vector<int>& newTet, const std::vector<int>& newNode);
     /// Rebuilds the running simulation on the tissue as it is, its clock going on.
     void rebuildSimulation();
@@ -173,6 +190,8 @@ private:
     Material m_material;
     Anchors m_anchors;
     std::vector<Scheme> m_schemes;
+    std::vector<std::uint8_t> m_onCut; ///< per node, onCutSurface()
+    std::vector<int> m_tetCuts;        ///< per tet, tetCuts()
     int m_cuts = 0;
     std::unique_ptr<Simulator> m_sim;
     SimulationSetup m_setup;    ///< of the running simulation (rebuilt after a resection)

@@ -11,6 +11,7 @@
 #include "widgets/scenario_document.h"
 #include "widgets/tissue_session.h"
 
+#include "core/mesh/stable_time_step.h"
 #include "scenario/scenario_load.h"
 #include "tests/widgets/sweep_fixtures.h"
 #include "tests/widgets/tissue_compare.h"
@@ -18,12 +19,14 @@
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QLocale>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QStyle>
 #include <QStyleOptionButton>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
 #include <memory>
 
 using namespace resect;
@@ -351,6 +354,95 @@ private slots:
         // Tets: the cut's added ones less those the collapses removed.
         QCOMPARE(s.panel.previewValue(QStringLiteral("tets")),
                  QStringLiteral("%1 → %2").arg(current->mesh().tetCount()).arg(direct.mesh().tetCount()));
+    }
+
+    // Issue 19 item 4: a preview that divides the stable time step by more than
+    // kStepDropWarning warns in the preview area, and the tets that limit the step are one
+    // click away; a preview that does not, does not warn.
+    void aCutThatDropsTheStableStepWarns_data() {
+        QTest::addColumn<bool>("subdivision");
+        QTest::addColumn<double>("height");
+        QTest::addColumn<bool>("warns");
+        // Subdivision without the improvement step leaves slivers (README: up to 5e13x).
+        QTest::newRow("subdivision, slivers") << true << 0.7 << true;
+        // The hybrid cut with its defaults keeps the step.
+        QTest::newRow("hybrid") << false << 0.6 << false;
+    }
+    void aCutThatDropsTheStableStepWarns() {
+        QFETCH(bool, subdivision);
+        QFETCH(double, height);
+        QFETCH(bool, warns);
+        Scene s(m_dir.path(), sample());
+        if (subdivision) {
+            s.doc.setMethod(CutMethod::Subdivision);
+            s.doc.setImprove(false);
+            QVERIFY(s.idle());
+        }
+        QSignalSpy inspect(&s.panel, &CutPanel::inspectTetRequested);
+        s.preview.setPendingSweep(planeSweep(s.session.base()->mesh(), height));
+        QVERIFY(s.idle());
+        const auto current = s.session.current();
+        const auto preview = s.preview.preview();
+        QVERIFY(current && preview);
+        // The condition, measured independently of the panel.
+        const double drop = current->stableDt / preview->stableDt;
+        QVERIFY2((drop > CutPreview::kStepDropWarning) == warns, qPrintable(QString::number(drop)));
+        auto* frame = s.panel.findChild<QWidget*>(QStringLiteral("previewWarning"));
+        auto* button = s.panel.findChild<QPushButton*>(QStringLiteral("inspectWorstTet"));
+        QVERIFY(frame && button);
+        if (!warns) {
+            QVERIFY2(s.panel.warning().isEmpty(), qPrintable(s.panel.warning()));
+            QVERIFY(frame->isHidden());
+            QVERIFY(preview->stepLimitingTets.empty());
+            return;
+        }
+        QVERIFY(frame->isVisible());
+        QVERIFY2(s.panel.warning().contains(QStringLiteral("times smaller")), qPrintable(s.panel.warning()));
+        // The worst tets are those whose own step is smallest, worst first.
+        const std::vector<double> steps = tetStableTimeSteps(preview->mesh(), preview->tissue.material());
+        const auto& worst = preview->stepLimitingTets;
+        QCOMPARE(int(worst.size()), CutPreview::kStepLimitingTets);
+        QCOMPARE(worst.front(), int(std::min_element(steps.begin(), steps.end()) - steps.begin()));
+        for (std::size_t i = 1; i < worst.size(); ++i)
+            QVERIFY(steps[worst[i - 1]] <= steps[worst[i]]);
+        // The worst tet limits the step: its own step is within a small factor of the mesh's.
+        QVERIFY2(steps[worst.front()] < 5 * preview->stableDt,
+                 qPrintable(QString("%1 vs %2").arg(steps[worst.front()]).arg(preview->stableDt)));
+        QVERIFY(s.panel.warning().contains(QString::number(worst.front())));
+        // One click: the worst; the next click: the next.
+        QVERIFY(button->isEnabled());
+        QTest::mouseClick(button, Qt::LeftButton);
+        QCOMPARE(inspect.count(), 1);
+        QCOMPARE(inspect.last().first().toInt(), worst[0]);
+        QTest::mouseClick(button, Qt::LeftButton);
+        QCOMPARE(inspect.last().first().toInt(), worst[1]);
+        // Discarding the cut takes the warning away.
+        s.preview.discard();
+        QVERIFY(s.panel.warning().isEmpty());
+        QVERIFY(frame->isHidden());
+    }
+
+    // Snapping that refuses every cut node warns too (the hybrid cut then keeps its cut nodes
+    // where the sweep crossed the edges).
+    void snappingThatRefusesEveryNodeWarns() {
+        Scene s(m_dir.path(), sample());
+        s.preview.setPendingSweep(planeSweep(s.session.base()->mesh(), 0.3));
+        QVERIFY(s.idle());
+        const auto preview = s.preview.preview();
+        QVERIFY(preview);
+        const CutStats& c = preview->cutStats;
+        QVERIFY2(c.refusedSnaps > 0 && c.snappedNodes == 0,
+                 qPrintable(QString("%1 snapped, %2 refused").arg(c.snappedNodes).arg(c.refusedSnaps)));
+        QVERIFY(s.preview.warnings().snapsAllRefused);
+        QVERIFY2(s.panel.warning().contains(QStringLiteral("Snapping refused every cut node")),
+                 qPrintable(s.panel.warning()));
+        QVERIFY(!preview->stepLimitingTets.empty());
+        // Without snapping there is nothing to refuse: no warning (the step is kept).
+        s.doc.setSnap(false);
+        QVERIFY(s.idle());
+        QVERIFY(!s.preview.warnings().snapsAllRefused);
+        QVERIFY(!s.preview.warnings().stepDropped);
+        QVERIFY2(s.panel.warning().isEmpty(), qPrintable(s.panel.warning()));
     }
 };
 

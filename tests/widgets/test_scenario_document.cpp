@@ -4,12 +4,15 @@
 
 #include "widgets/scenario_document.h"
 
+#include "core/mesher/samples.h"
 #include "scenario/scenario_load.h"
+#include "scenario/scene_defaults.h"
 
 #include <QDateTime>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -195,6 +198,24 @@ private slots:
              &ScenarioDocument::effectsChanged},
             {"title", nothing, [](ScenarioDocument& d) { d.setTitle("Another title"); },
              &ScenarioDocument::metadataChanged},
+            {"effect parameters", nothing,
+             [](ScenarioDocument& d) {
+                 QVERIFY(d.setEffectParameters("damping", QJsonObject{{"coefficient", 5.0}}));
+             },
+             &ScenarioDocument::effectsChanged},
+            {"add fixed region", nothing,
+             [](ScenarioDocument& d) { QVERIFY(d.addFixedRegion(FixedRegion{Vec3(0, 0, 0), Vec3(1, 1, 1), {}})); },
+             &ScenarioDocument::fixedRegionsChanged},
+            {"change fixed region", nothing,
+             [](ScenarioDocument& d) {
+                 FixedRegion r = d.fixedRegions().front();
+                 r.max.z() += 1;
+                 QVERIFY(d.setFixedRegion(0, r));
+             },
+             &ScenarioDocument::fixedRegionsChanged},
+            {"remove the last fixed region", nothing,
+             [](ScenarioDocument& d) { QVERIFY(d.removeFixedRegion(0)); },
+             &ScenarioDocument::fixedRegionsChanged},
         };
         for (const EditCase& c : cases) {
             auto doc = makeDocument();
@@ -235,16 +256,139 @@ private slots:
         QVERIFY(!doc->setEffectEnabled("levitation", true));
 
         // Effects stay in the documented order; one switched back on keeps its parameters.
+        // (A new sample has deformation, fixed and damping on.)
         QVERIFY(doc->setEffectEnabled("tool-contact", true));
         QVERIFY(doc->setEffectEnabled("gravity", true));
         const auto& effects = doc->scenario().effects;
-        QCOMPARE(effects.size(), std::size_t(3));
+        QCOMPARE(effects.size(), std::size_t(5));
         QCOMPARE(effects[1].name, std::string("gravity"));
-        QCOMPARE(effects[2].name, std::string("tool-contact"));
-        QCOMPARE(effects[2].number("radius", 0), ScenarioDocument::kDefaultToolContactRadius);
+        QCOMPARE(effects[3].name, std::string("tool-contact"));
+        QCOMPARE(effects[3].number("radius", 0), ScenarioDocument::kDefaultToolContactRadius);
         const int steps = doc->undoStack()->count();
         QVERIFY(doc->setEffectEnabled("gravity", true)); // already on: nothing to do
         QCOMPARE(doc->undoStack()->count(), steps);
+    }
+
+    // Issue 19: a new scene from a sample behaves when simulated: its base is anchored by a
+    // box around the bottom few percent of its height, and damping is on with a coefficient.
+    void aNewSampleSceneHasItsBaseFixedAndDamping_data() {
+        QTest::addColumn<QString>("name");
+        QTest::newRow("polyp") << "polyp";
+        QTest::newRow("myoma") << "myoma";
+    }
+    void aNewSampleSceneHasItsBaseFixedAndDamping() {
+        QFETCH(QString, name);
+        auto doc = makeDocument();
+        QVERIFY(doc->newFromSample(name));
+        const Scenario& s = doc->scenario();
+        QVERIFY(doc->isEffectEnabled("deformation"));
+        QVERIFY(doc->isEffectEnabled("fixed"));
+        QVERIFY(doc->isEffectEnabled("damping"));
+        QVERIFY(!doc->isEffectEnabled("gravity"));
+        QCOMPARE(s.findEffect("damping")->number("coefficient", 0), kDefaultDampingCoefficient);
+        QVERIFY(kDefaultDampingCoefficient > 0);
+        QCOMPARE(doc->fixedRegions().size(), std::size_t(1));
+        // The box: the sample's bottom kBaseRegionFraction of its height, wider than it.
+        const TriangleSurface surface = sampleSurface(*sampleFromName(name.toStdString()));
+        Vec3 lo = surface.positions.front(), hi = lo;
+        for (const Vec3& p : surface.positions) {
+            lo = lo.cwiseMin(p);
+            hi = hi.cwiseMax(p);
+        }
+        const FixedRegion& box = doc->fixedRegions().front();
+        QVERIFY(box.min.x() < lo.x() && box.min.y() < lo.y() && box.min.z() < lo.z());
+        QVERIFY(box.max.x() > hi.x() && box.max.y() > hi.y());
+        QVERIFY(std::abs(box.max.z() - (lo.z() + kBaseRegionFraction * (hi.z() - lo.z()))) < 1e-9 * (hi - lo).norm());
+        ScenarioDiagnostics diag;
+        const Status valid = validateScenario(s, diag);
+        QVERIFY2(valid.ok(), valid.message().c_str());
+        // An imported anatomy's base is unknown before it is loaded: damping only.
+        auto anatomy = makeDocument();
+        const QString file = path("tissue.obj");
+        QVERIFY(writeAll(file, "v 0 0 0\n"));
+        QVERIFY(anatomy->newFromAnatomy(file));
+        QVERIFY(anatomy->isEffectEnabled("damping"));
+        QVERIFY(!anatomy->isEffectEnabled("fixed"));
+        QVERIFY(anatomy->fixedRegions().empty());
+    }
+
+    void effectsStartWithParametersThatRun() {
+        // Every effect switched on for the first time has the parameters it needs (a new
+        // anatomy scene: nothing on but deformation and damping).
+        auto doc = makeDocument();
+        const QString file = path("tissue.obj");
+        QVERIFY(writeAll(file, "v 0 0 0\n"));
+        QVERIFY(doc->newFromAnatomy(file));
+        for (const char* name : {"gravity", "tool-contact"})
+            QVERIFY(doc->setEffectEnabled(name, true));
+        QCOMPARE(doc->scenario().findEffect("gravity")->vector("acceleration", Vec3::Zero()),
+                 Vec3(0, 0, -kDefaultGravity));
+        QCOMPARE(doc->scenario().findEffect("tool-contact")->number("radius", 0), kDefaultToolContactRadius);
+        ScenarioDiagnostics diag;
+        const Status valid = validateScenario(doc->scenario(), diag);
+        QVERIFY2(valid.ok(), valid.message().c_str());
+        // Switching damping off and on again keeps an edited coefficient.
+        QVERIFY(doc->setEffectParameters("damping", QJsonObject{{"coefficient", 3.0}}));
+        QVERIFY(doc->setEffectEnabled("damping", false));
+        QVERIFY(!doc->setEffectParameters("damping", QJsonObject{{"coefficient", 4.0}})); // off
+        QVERIFY(doc->setEffectEnabled("damping", true));
+        QCOMPARE(doc->scenario().findEffect("damping")->number("coefficient", 0), 3.0);
+    }
+
+    void fixedRegionEditsAreUndoSteps() {
+        auto doc = makeDocument();
+        QVERIFY(doc->newFromSample("polyp"));
+        const FixedRegion base = doc->fixedRegions().front();
+        // Typing into one box's numbers is one undo step; another box starts another.
+        FixedRegion r = base;
+        for (double z : {1.5, 2.0, 2.5}) {
+            r.max.z() = z;
+            QVERIFY(doc->setFixedRegion(0, r));
+        }
+        QCOMPARE(doc->undoStack()->count(), 1);
+        QVERIFY(doc->addFixedRegion(FixedRegion{Vec3(-1, -1, 5), Vec3(1, 1, 6), {}}));
+        QCOMPARE(doc->undoStack()->count(), 2);
+        QVERIFY(!doc->setFixedRegion(2, r));
+        QVERIFY(!doc->removeFixedRegion(-1));
+        doc->undoStack()->undo();
+        doc->undoStack()->undo();
+        QVERIFY(doc->fixedRegions() == std::vector<FixedRegion>{base});
+
+        // Removing the last box switches the fixed effect off with it (one step); fixRegion
+        // switches it on again with a box (one step).
+        QVERIFY(doc->removeFixedRegion(0));
+        QVERIFY(doc->fixedRegions().empty());
+        QVERIFY(!doc->isEffectEnabled("fixed"));
+        QCOMPARE(doc->undoStack()->index(), 1);
+        QVERIFY(doc->fixRegion(base));
+        QVERIFY(doc->isEffectEnabled("fixed"));
+        QVERIFY(doc->fixedRegions() == std::vector<FixedRegion>{base});
+        QCOMPARE(doc->undoStack()->index(), 2);
+        doc->undoStack()->undo();
+        QVERIFY(doc->fixedRegions().empty());
+        QVERIFY(!doc->isEffectEnabled("fixed"));
+        doc->undoStack()->undo();
+        QVERIFY(doc->fixedRegions() == std::vector<FixedRegion>{base});
+        QVERIFY(doc->isEffectEnabled("fixed"));
+        ScenarioDiagnostics diag;
+        QVERIFY(validateScenario(doc->scenario(), diag).ok());
+    }
+
+    void effectParameterEditsMerge() {
+        auto doc = makeDocument();
+        QVERIFY(doc->newFromSample("polyp"));
+        for (double c : {21.0, 22.0, 30.0})
+            QVERIFY(doc->setEffectParameters("damping", QJsonObject{{"coefficient", c}}));
+        QCOMPARE(doc->undoStack()->count(), 1);
+        QVERIFY(doc->setEffectEnabled("gravity", true));
+        QVERIFY(doc->setEffectParameters("gravity", QJsonObject{{"acceleration", QJsonArray{0, 0, -1000}}}));
+        QCOMPARE(doc->undoStack()->count(), 3);
+        // Back to where it started: the merged step disappears.
+        QVERIFY(doc->setEffectParameters("gravity", defaultEffectParameters("gravity")));
+        QCOMPARE(doc->undoStack()->count(), 2);
+        doc->undoStack()->undo();
+        doc->undoStack()->undo();
+        QCOMPARE(doc->scenario().findEffect("damping")->number("coefficient", 0), kDefaultDampingCoefficient);
     }
 
     void consecutiveNumericEditsMerge() {

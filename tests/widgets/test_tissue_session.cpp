@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <span>
 
 using namespace resect;
@@ -213,10 +214,13 @@ private slots:
         doc.addSweep(planeSweep(session.base()->mesh(), 0.6, 1e-3));
         QVERIFY(session.waitForIdle(kWaitMs));
         const auto cut = session.current();
-        QVERIFY(cut->mesh().tetCount() > tets);
+        // A new sample's base is anchored: the head the plane cuts off is a resected chip.
+        QVERIFY(allTets(cut->tissue) > tets);
         QCOMPARE(cut->cuts(), 1);
         QCOMPARE(cut->pieces, 2);
-        QVERIFY(std::abs(cut->quality.volume - volume) < 1e-9 * volume);
+        QCOMPARE(cut->tissue.chips().size(), std::size_t(1));
+        const double total = cut->quality.volume + cut->tissue.resectedVolume();
+        QVERIFY(std::abs(total - volume) < 1e-9 * volume);
         QVERIFY(cut->surfaceCapTriangles > 0);
         QVERIFY(checkValidity(cut->mesh()).empty());
         QCOMPARE(appendedCuts(uncut->applied, cut->applied), 1);
@@ -229,6 +233,64 @@ private slots:
         doc.undoStack()->redo();
         QVERIFY(session.waitForIdle(kWaitMs));
         QCOMPARE(tissueDifference(session.current()->tissue, cut->tissue), QString());
+    }
+
+    // Issue 19: editing a fixed region re-anchors the loaded tissue (no re-meshing, no new
+    // base announced, so the views keep their framing) and applies the cuts again: what a
+    // cut resects follows the anchors, exactly as replay derives it.
+    void fixedRegionEditsReanchorWithoutReloading() {
+        ScenarioDocument doc;
+        doc.setAutosaveDirectory(m_dir.path());
+        TissueSession session(doc);
+        QVERIFY(doc.newFromSample(QStringLiteral("polyp")));
+        QVERIFY(session.waitForIdle(kWaitMs));
+        const auto loaded = session.base();
+        const std::vector<int> baseAnchors = loaded->tissue.anchors().nodes();
+        QVERIFY(!baseAnchors.empty());
+        doc.addSweep(planeSweep(loaded->mesh(), 0.6, 1e-3));
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QCOMPARE(session.current()->tissue.chips().size(), std::size_t(1)); // the head
+
+        // Move the box up to hold the head instead: the stalk is now what comes off.
+        QSignalSpy base(&session, &TissueSession::baseChanged);
+        QSignalSpy current(&session, &TissueSession::currentChanged);
+        FixedRegion head = doc.fixedRegions().front();
+        head.min.z() = 17;
+        head.max.z() = 30;
+        QVERIFY(doc.setFixedRegion(0, head));
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QVERIFY2(session.error().isEmpty(), qPrintable(session.error()));
+        QCOMPARE(base.count(), 0);
+        QCOMPARE(current.count(), 1);
+        // The same mesh (not meshed again), other anchors under a new base id.
+        QVERIFY(&session.base()->mesh() != &loaded->mesh());
+        const auto same = [](std::span<const Vec3> a, std::span<const Vec3> b) {
+            return std::equal(a.begin(), a.end(), b.begin(), b.end());
+        };
+        QVERIFY(same(session.base()->mesh().referencePositions(), loaded->mesh().referencePositions()));
+        QVERIFY(session.base()->applied.baseId != loaded->applied.baseId);
+        const std::vector<int> headAnchors = session.base()->tissue.anchors().nodes();
+        QVERIFY(!headAnchors.empty() && headAnchors != baseAnchors);
+        for (int n : headAnchors)
+            QVERIFY(head.contains(loaded->mesh().ref(n)));
+        Tissue direct;
+        QVERIFY(cutDirectly(doc.scenario(), direct).ok());
+        QCOMPARE(tissueDifference(session.current()->tissue, direct), QString());
+        // The chip is the stalk now: it reaches down to the base.
+        QCOMPARE(session.current()->tissue.chips().size(), std::size_t(1));
+        double chipBottom = std::numeric_limits<double>::infinity();
+        for (const Vec3& p : session.current()->tissue.chips().front().mesh.referencePositions())
+            chipBottom = std::min(chipBottom, p.z());
+        QVERIFY2(chipBottom < 1, qPrintable(QString::number(chipBottom)));
+
+        // Undo: back to the base's anchors, bit-identical to the state before.
+        doc.undoStack()->undo();
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QCOMPARE(session.base()->tissue.anchors().nodes(), baseAnchors);
+        direct = Tissue();
+        QVERIFY(cutDirectly(doc.scenario(), direct).ok());
+        QCOMPARE(tissueDifference(session.current()->tissue, direct), QString());
+        QCOMPARE(base.count(), 0);
     }
 
     void badTissuesAreReportedNotFatal() {
@@ -312,8 +374,17 @@ private slots:
             {"still stroke", [&] { doc.addStroke(stillStroke()); }, "strokes[0]"},
             {"missing sweep file", [&] { doc.addSweep(missing); }, "no-such-sweep.json"},
             {"rings out of range", [&] { doc.setRings(CutLimits::kMaxRelaxRings + 1); }, "rings"},
-            {"fixed without regions", [&] { doc.setEffectEnabled(QStringLiteral("fixed"), true); },
-             "fixed"},
+            {"fixed region holding no node",
+             [&] {
+                 FixedRegion away;
+                 away.min = Vec3(100, 100, 100);
+                 away.max = Vec3(101, 101, 101);
+                 doc.setFixedRegion(0, away);
+             },
+             "holds no node"},
+            {"damping without a coefficient",
+             [&] { doc.setEffectParameters(QStringLiteral("damping"), QJsonObject{{"coefficient", 0}}); },
+             "coefficient"},
         };
         for (const Case& c : cases) {
             QSignalSpy refused(&session, &TissueSession::editRefused);

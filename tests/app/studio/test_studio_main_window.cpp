@@ -14,6 +14,8 @@
 #include "widgets/camera_ray.h"
 #include "widgets/cut_panel.h"
 #include "widgets/cut_preview.h"
+#include "widgets/fixed_region_editor.h"
+#include "widgets/fixed_region_tool.h"
 #include "widgets/language.h"
 #include "widgets/quality_curve.h"
 #include "widgets/quality_panel.h"
@@ -31,6 +33,7 @@
 #include "tests/widgets/tissue_compare.h"
 #include <QAbstractButton>
 #include <QAction>
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -44,11 +47,13 @@
 #include <vtkCamera.h>
 
 #include "scenario/scenario_load.h"
+#include "scenario/scene_defaults.h"
 #include "scenario/scenario_run.h"
 #include "scenario/scenario_save.h"
 
 #include <QStatusBar>
 
+#include <cmath>
 #include <functional>
 #include <random>
 
@@ -448,7 +453,8 @@ private slots:
         gravity->click(); // the dock is tabbed behind the cut panel: not clickable with the mouse
         QVERIFY(s.window.document().isEffectEnabled(QStringLiteral("gravity")));
         QVERIFY(s.window.simulation().isReady());
-        QVERIFY(s.window.simulation().effectNames().size() == 2);
+        // A new sample scene has deformation, fixed and damping on (scene_defaults.h).
+        QCOMPARE(s.window.simulation().effectNames().size(), std::size_t(4));
 
         auto* step = panel->findChild<QPushButton*>(QStringLiteral("simStep"));
         QVERIFY(step);
@@ -484,7 +490,7 @@ private slots:
         QVERIFY(!s.window.document().isEffectEnabled(QStringLiteral("gravity")));
         QVERIFY(!gravity->isChecked());
         QCOMPARE(s.window.simulation().steps(), 0LL);
-        QCOMPARE(s.window.simulation().effectNames().size(), std::size_t(1));
+        QCOMPARE(s.window.simulation().effectNames().size(), std::size_t(3));
         s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
     }
 
@@ -518,7 +524,12 @@ private slots:
         QCOMPARE(s.window.session().current()->cuts(), 1);
         QCOMPARE(s.window.simulation().time(), time); // followed, not rebuilt
         QCOMPARE(shown.source(), ShownTissue::Source::Simulation);
-        QVERIFY(s.window.simulation().mesh().tetCount() > tets);
+        // The cut added tets (the part the plane took off a new sample's anchored base is a
+        // resected chip now).
+        int chipTets = 0;
+        for (const Chip& c : s.window.simulation().tissue().chips())
+            chipTets += c.mesh.tetCount();
+        QVERIFY(s.window.simulation().mesh().tetCount() + chipTets > tets);
         QCOMPARE(actor.tetCount(), s.window.simulation().mesh().tetCount());
         QCOMPARE(actor.tetScheme(actor.tetCount() - 1), s.window.simulation().tissue().schemes().back());
         s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
@@ -1078,7 +1089,9 @@ private slots:
         QCOMPARE(points[1], QPointF(1, summarizeQuality(once.mesh()).minRadiusRatio / input));
         QCOMPARE(points[2], QPointF(2, summarizeQuality(twice.mesh()).minRadiusRatio / input));
         QCOMPARE(points[2].y() * input, s.window.session().current()->quality.minRadiusRatio);
-        QVERIFY2(points[1].y() < 1 && points[2].y() <= points[1].y(),
+        // (The second cut need not worsen the worst tet: a new sample's base is anchored, and
+        // what the cuts take off, worst tets included, leaves the tissue as a chip.)
+        QVERIFY2(points[1].y() < 1 && points[2].y() < 1,
                  qPrintable(QStringLiteral("%1 %2").arg(points[1].y()).arg(points[2].y())));
         for (const QPointF& p : points)
             QVERIFY(curve->plotRect().adjusted(-1, -1, 1, 1).contains(curve->pixelOf(p)));
@@ -1151,6 +1164,296 @@ private slots:
         QCOMPARE(int(s.window.document().scenario().strokes.size()), 1);
         QCOMPARE(s.window.session().current()->pieces, 2); // a chip came off
         QVERIFY(s.window.session().error().isEmpty());
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    // Issue 19 item 3: a new scene from a sample has its base anchored and damping on; the
+    // fixed-region editor anchors nodes (an undoable edit typed into its numbers), and with
+    // gravity the base stays where it is and the body in view. Without the anchors the same
+    // simulation drops the body far below where it was.
+    void aNewSampleSceneStaysInPlaceUnderGravity() {
+        Studio s;
+        QVERIFY(s.load());
+        QSignalSpy errors(&s.window, &MainWindow::errorReported);
+        SimulationPanel* panel = s.window.simulationPanel();
+        QVERIFY(panel->effectBox("fixed")->isChecked());
+        QVERIFY(panel->effectBox("damping")->isChecked());
+        QVERIFY(!panel->effectBox("gravity")->isChecked());
+        auto* coefficient = panel->findChild<QDoubleSpinBox*>(QStringLiteral("dampingCoefficient"));
+        QVERIFY(coefficient && coefficient->isEnabled());
+        QCOMPARE(coefficient->value(), kDefaultDampingCoefficient);
+        FixedRegionEditor* editor = panel->fixedRegionEditor();
+        QCOMPARE(editor->regionCount(), 1);
+
+        // The base: anchored nodes, all in the bottom few percent of the height.
+        const TetMesh& uncut = s.window.session().base()->mesh();
+        double zmin = uncut.ref(0).z(), zmax = zmin;
+        for (const Vec3& p : uncut.referencePositions()) {
+            zmin = std::min(zmin, p.z());
+            zmax = std::max(zmax, p.z());
+        }
+        const double height = zmax - zmin;
+        const std::vector<int> base = s.window.session().current()->tissue.anchors().nodes();
+        QVERIFY(base.size() >= 10);
+        QCOMPARE(editor->anchoredNodes(), int(base.size()));
+        auto* anchoredLabel = panel->findChild<QLabel*>(QStringLiteral("anchoredNodes"));
+        QVERIFY2(anchoredLabel->text().contains(QString::number(base.size())), qPrintable(anchoredLabel->text()));
+        for (int n : base)
+            QVERIFY(uncut.ref(n).z() <= zmin + 1.01 * kBaseRegionFraction * height);
+
+        // Typing a higher top into the box anchors more nodes; undo takes it back.
+        QDoubleSpinBox* top = editor->coordinateBox(0, true, 2);
+        QVERIFY(top && top == panel->findChild<QDoubleSpinBox*>(QStringLiteral("region0MaxZ")));
+        top->setFocus();
+        top->selectAll();
+        QTest::keyClicks(top, QString::number(zmin + 0.25 * height, 'f', 2));
+        QTest::keyClick(top, Qt::Key_Return);
+        QVERIFY(s.idle());
+        QCOMPARE(s.window.document().fixedRegions().front().max.z(), std::round((zmin + 0.25 * height) * 100) / 100);
+        QVERIFY(s.window.session().current()->tissue.anchors().nodes().size() > base.size() + 10);
+        QCOMPARE(editor->anchoredNodes(), int(s.window.session().current()->tissue.anchors().nodes().size()));
+        s.action("undo")->trigger();
+        QVERIFY(s.idle());
+        QCOMPARE(s.window.session().current()->tissue.anchors().nodes(), base);
+        QCOMPARE(editor->anchoredNodes(), int(base.size()));
+
+        // Gravity on, a third of a second simulated.
+        panel->effectBox("gravity")->click();
+        QVERIFY(s.idle());
+        QVERIFY(s.window.simulation().isReady());
+        const auto simulate = [&s] {
+            for (int i = 0; i < 300; ++i)
+                if (!s.window.simulation().step())
+                    return false;
+            return true;
+        };
+        QVERIFY2(simulate(), qPrintable(s.window.simulation().error()));
+        const TetMesh& mesh = s.window.simulation().mesh();
+        for (int n : base)
+            QCOMPARE(mesh.pos(n), mesh.ref(n)); // held exactly
+        // The body sags but stays where it was: every node within a body height of its bounds.
+        double lowest = mesh.pos(0).z(), meanDrop = 0;
+        for (int n = 0; n < mesh.nodeCount(); ++n) {
+            lowest = std::min(lowest, mesh.pos(n).z());
+            meanDrop += (mesh.ref(n).z() - mesh.pos(n).z()) / mesh.nodeCount();
+        }
+        QVERIFY2(lowest > zmin - 0.5 * height, qPrintable(QString::number(lowest)));
+        QVERIFY(meanDrop > 0); // it does sag
+        QVERIFY2(meanDrop < 0.5 * height, qPrintable(QString::number(meanDrop)));
+        // And it is in view: the simulated tissue is on show and every node projects into the
+        // viewport (the camera as framed for the new scene).
+        QVERIFY(s.window.shownTissue().source() == ShownTissue::Source::Simulation);
+        VtkViewport* view = s.window.viewport();
+        for (int n = 0; n < mesh.nodeCount(); ++n) {
+            const auto pixel = worldToPixel(view->camera(), view->size(), mesh.pos(n));
+            QVERIFY(pixel);
+            QVERIFY2(QRectF(QPointF(0, 0), QSizeF(view->size())).contains(*pixel),
+                     qPrintable(QString("node %1 at (%2, %3)").arg(n).arg(pixel->x()).arg(pixel->y())));
+        }
+
+        // Without the anchors (the fixed effect off) the same simulation drops the body.
+        panel->effectBox("fixed")->click();
+        QVERIFY(s.idle());
+        QVERIFY(!s.window.document().isEffectEnabled(QStringLiteral("fixed")));
+        QVERIFY2(simulate(), qPrintable(s.window.simulation().error()));
+        const TetMesh& free = s.window.simulation().mesh(); // a new simulation (the old `mesh` is gone)
+        double freeDrop = 0;
+        for (int n = 0; n < free.nodeCount(); ++n)
+            freeDrop += (free.ref(n).z() - free.pos(n).z()) / free.nodeCount();
+        QVERIFY2(freeDrop > 2 * height, qPrintable(QString::number(freeDrop)));
+        QCOMPARE(errors.count(), 0);
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    // A second new scene on the same sample reuses the loaded tissue (not meshed again) with
+    // its anchors, and the fixed regions go on working.
+    void aNewSceneOnTheSameSampleKeepsItsAnchors() {
+        Studio s;
+        QVERIFY(s.load());
+        const auto first = s.window.session().base();
+        const std::vector<int> anchors = first->tissue.anchors().nodes();
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+        QVERIFY(s.load());
+        QVERIFY(s.window.session().base());
+        QCOMPARE(s.window.session().base()->tissue.anchors().nodes(), anchors);
+        QCOMPARE(s.window.session().current()->tissue.anchors().nodes(), anchors);
+        QVERIFY(s.window.simulationPanel()->fixedRegionEditor()->baseRegionOfTissue());
+        QCOMPARE(s.window.simulationPanel()->fixedRegionEditor()->anchoredNodes(), int(anchors.size()));
+        QVERIFY(s.window.simulation().isReady());
+    }
+
+    // Toggling effects never opens a dialog: with error dialogs on, every effect switched on
+    // and off (also quickly, while the last edit is still derived) leaves no message box and
+    // reports no error; the fixed effect without a box anchors the tissue's base again.
+    void togglingEffectsOpensNoDialog() {
+        Studio s;
+        s.window.setErrorDialogsEnabled(true);
+        QVERIFY(s.load());
+        QSignalSpy errors(&s.window, &MainWindow::errorReported);
+        SimulationPanel* panel = s.window.simulationPanel();
+        const auto messageBoxes = [] {
+            int n = 0;
+            for (QWidget* w : QApplication::topLevelWidgets())
+                n += qobject_cast<QMessageBox*>(w) != nullptr && w->isVisible() ? 1 : 0;
+            return n;
+        };
+        const Scenario before = s.window.document().scenario();
+        for (int round = 0; round < 2; ++round)
+            for (const std::string& name : knownEffectNames()) {
+                QCheckBox* box = panel->effectBox(name);
+                box->click();
+                if (round == 1)
+                    QVERIFY(s.idle()); // the first round does not wait for the session
+                box->click();
+                QVERIFY(s.idle());
+                QCOMPARE(messageBoxes(), 0);
+                QVERIFY2(panel->notice().isEmpty(), qPrintable(panel->notice()));
+                QVERIFY2(s.window.simulation().error().isEmpty(), qPrintable(s.window.simulation().error()));
+            }
+        QVERIFY(s.window.document().scenario() == before);
+        // Every effect on at once: the simulation runs.
+        for (const std::string& name : knownEffectNames())
+            if (!panel->effectBox(name)->isChecked())
+                panel->effectBox(name)->click();
+        QVERIFY(s.idle());
+        for (const std::string& name : knownEffectNames())
+            QVERIFY2(s.window.document().isEffectEnabled(QString::fromStdString(name)), name.c_str());
+        QVERIFY(s.window.simulation().step());
+
+        // The last box removed switches the fixed effect off; ticking it anchors the base again.
+        auto* remove = panel->findChild<QPushButton*>(QStringLiteral("region0Remove"));
+        QVERIFY(remove);
+        remove->click();
+        QVERIFY(s.idle());
+        QVERIFY(!panel->effectBox("fixed")->isChecked());
+        QVERIFY(s.window.document().fixedRegions().empty());
+        QVERIFY(s.window.session().current()->tissue.anchors().empty());
+        panel->effectBox("fixed")->click();
+        QVERIFY(s.idle());
+        QVERIFY(s.window.document().isEffectEnabled(QStringLiteral("fixed")));
+        QCOMPARE(s.window.document().fixedRegions().size(), std::size_t(1));
+        QVERIFY(!s.window.session().current()->tissue.anchors().empty());
+
+        // A parameter typed that the effect cannot take is undone in place, not in a dialog.
+        auto* coefficient = panel->findChild<QDoubleSpinBox*>(QStringLiteral("dampingCoefficient"));
+        QVERIFY(coefficient->minimum() > 0); // the editor cannot even make it 0
+        QCOMPARE(messageBoxes(), 0);
+        QCOMPARE(errors.count(), 0);
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    // The boxes placed in the view: "Place in view" draws each with a handle per face; dragging
+    // the top face's handle up moves that face (one undoable edit), the numbers follow, and
+    // more nodes are anchored. A drag away from the handles turns the view instead.
+    void aFixedRegionIsPlacedByDraggingItsHandle() {
+        Studio s;
+        QVERIFY(s.load());
+        auto* tool = s.window.findChild<FixedRegionTool*>();
+        QVERIFY(tool && !tool->isActive());
+        auto* inView = s.window.simulationPanel()->findChild<QPushButton*>(QStringLiteral("editRegionsInView"));
+        QVERIFY(inView && inView->isCheckable());
+        inView->click();
+        QVERIFY(tool->isActive());
+        QCOMPARE(s.window.viewport()->tool(), static_cast<ViewportTool*>(tool));
+        QCOMPARE(tool->handleCount(), 6);
+
+        VtkViewport* view = s.window.viewport();
+        const FixedRegion before = s.window.document().fixedRegions().front();
+        const std::size_t anchored = s.window.session().current()->tissue.anchors().nodes().size();
+        const FixedRegionTool::Face top{0, 2, true};
+        const auto pixel = worldToPixel(view->camera(), view->size(), tool->faceCentre(top));
+        QVERIFY(pixel);
+        QCOMPARE(tool->faceAt(*pixel), std::optional<FixedRegionTool::Face>(top));
+        const int steps = s.window.document().undoStack()->count();
+        const QPoint from = pixel->toPoint();
+        QTest::mousePress(view, Qt::LeftButton, {}, from);
+        for (int i = 1; i <= 10; ++i)
+            QTest::mouseMove(view, from - QPoint(0, 8 * i));
+        QTest::mouseRelease(view, Qt::LeftButton, {}, from - QPoint(0, 80));
+        QVERIFY(s.idle());
+        const FixedRegion after = s.window.document().fixedRegions().front();
+        QVERIFY2(after.max.z() > before.max.z() + 1, qPrintable(QString::number(after.max.z())));
+        QCOMPARE(after.min, before.min); // only that face moved
+        QCOMPARE(after.max.x(), before.max.x());
+        QCOMPARE(s.window.document().undoStack()->count(), steps + 1); // one edit for the drag
+        QCOMPARE(s.window.simulationPanel()->fixedRegionEditor()->coordinateBox(0, true, 2)->value(),
+                 std::round(after.max.z() * 100) / 100);
+        QVERIFY(s.window.session().current()->tissue.anchors().nodes().size() > anchored);
+        QCOMPARE(tool->regions().front().max.z(), after.max.z());
+
+        // Away from the handles the press is the camera's: the box stays.
+        const Vec3 eye(view->camera()->GetPosition());
+        QTest::mousePress(view, Qt::LeftButton, {}, QPoint(10, 10));
+        QTest::mouseMove(view, QPoint(60, 20));
+        QTest::mouseRelease(view, Qt::LeftButton, {}, QPoint(60, 20));
+        QVERIFY(!(Vec3(view->camera()->GetPosition()) == eye));
+        QCOMPARE(s.window.document().fixedRegions().front().max.z(), after.max.z());
+
+        s.action("undo")->trigger();
+        QVERIFY(s.idle());
+        QCOMPARE(s.window.document().fixedRegions().front().max.z(), before.max.z());
+        QCOMPARE(tool->regions().front().max.z(), before.max.z());
+        // Another tool (drawing a sweep) takes the view: the boxes go, the button says so.
+        view->setTool(nullptr);
+        QVERIFY(!tool->isActive());
+        QVERIFY(!inView->isChecked());
+        QCOMPARE(tool->handleCount(), 0);
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    // A box moved off the tissue while the fixed effect is on would anchor nothing: the edit is
+    // undone and the simulation dock says why, in place.
+    void aBoxThatHoldsNoNodeIsUndoneInPlace() {
+        Studio s;
+        QVERIFY(s.load());
+        QSignalSpy errors(&s.window, &MainWindow::errorReported);
+        SimulationPanel* panel = s.window.simulationPanel();
+        const FixedRegion base = s.window.document().fixedRegions().front();
+        QDoubleSpinBox* bottom = panel->fixedRegionEditor()->coordinateBox(0, false, 2);
+        QDoubleSpinBox* top = panel->fixedRegionEditor()->coordinateBox(0, true, 2);
+        top->setValue(200);
+        QVERIFY(s.idle());
+        bottom->setValue(150); // above the polyp: the box holds no node
+        QVERIFY(s.idle());
+        QVERIFY2(panel->notice().contains(QStringLiteral("holds no node")), qPrintable(panel->notice()));
+        QCOMPARE(s.window.document().fixedRegions().front().min.z(), base.min.z());
+        QCOMPARE(bottom->value(), base.min.z());
+        QVERIFY(!s.window.session().current()->tissue.anchors().empty());
+        QCOMPARE(errors.count(), 0);
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    // Issue 19 item 4: a preview that divides the stable step by more than ten warns in the
+    // cut dock, and its button shows the worst tet in the quality dock's tet inspector.
+    void aCutThatWrecksTheStepWarnsWithItsWorstTet() {
+        Studio s;
+        QVERIFY(s.load());
+        CutPanel* cut = s.window.cutPanel();
+        auto* method = cut->findChild<QComboBox*>(QStringLiteral("method"));
+        method->setCurrentIndex(method->findData(int(CutMethod::Subdivision)));
+        cut->findChild<QCheckBox*>(QStringLiteral("improve"))->click();
+        QVERIFY(s.idle());
+        QCOMPARE(s.window.document().scenario().cut.method, CutMethod::Subdivision);
+        QVERIFY(!s.window.document().scenario().cut.improve);
+        QVERIFY(cut->warning().isEmpty());
+        s.window.cutPreview().setPendingSweep(planeSweep(s.window.session().base()->mesh(), 0.7));
+        QVERIFY(s.idle());
+        const auto preview = s.window.cutPreview().preview();
+        QVERIFY(preview);
+        QVERIFY(s.window.session().current()->stableDt > CutPreview::kStepDropWarning * preview->stableDt);
+        QVERIFY2(cut->warning().contains(QStringLiteral("times smaller")), qPrintable(cut->warning()));
+        auto* inspect = cut->findChild<QPushButton*>(QStringLiteral("inspectWorstTet"));
+        QVERIFY(inspect && inspect->isEnabled());
+        QTest::mouseClick(inspect, Qt::LeftButton);
+        TetInspector* inspector = s.window.qualityPanel()->inspector();
+        QCOMPARE(inspector->tet(), preview->stepLimitingTets.front());
+        QVERIFY(inspector->isVisible()); // its tab and the quality dock are raised
+        // The inspected tet is the preview's (the mesh on show): its measures are there.
+        auto* ratio = inspector->findChild<QLabel*>(QStringLiteral("radiusRatio"));
+        const Tet& q = preview->mesh().tet(inspector->tet());
+        const double expected = radiusRatio(preview->mesh().ref(q[0]), preview->mesh().ref(q[1]),
+                                            preview->mesh().ref(q[2]), preview->mesh().ref(q[3]));
+        QCOMPARE(ratio->text(), QString::number(expected, 'g', 6));
         s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
     }
 };

@@ -6,6 +6,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -154,6 +155,61 @@ private slots:
         computeLumpedMasses(m, Material{}.density);
         const double squashed = stableTimeStep(m, Material{}).dt;
         QVERIFY2(squashed < 0.3 * dt, qPrintable(QString("%1 vs %2").arg(squashed).arg(dt)));
+    }
+
+    void oneTetStepIsTheMeshStep_data() {
+        QTest::addColumn<bool>("areaTerm");
+        QTest::newRow("springs and volume") << false;
+        QTest::newRow("with the area term") << true;
+    }
+    void oneTetStepIsTheMeshStep() {
+        // A mesh of one tet: its own terms are the whole model, so its step is the mesh's.
+        QFETCH(bool, areaTerm);
+        TetMesh m;
+        m.addNode(Vec3(0, 0, 0), Vec3(0, 0, 0));
+        m.addNode(Vec3(1.3, 0.1, 0), Vec3(1.3, 0.1, 0));
+        m.addNode(Vec3(0.2, 0.9, 0.1), Vec3(0.2, 0.9, 0.1));
+        m.addNode(Vec3(0.3, 0.2, 0.7), Vec3(0.3, 0.2, 0.7));
+        m.addTet({0, 1, 2, 3});
+        computeLumpedMasses(m, Material{}.density);
+        StableTimeStepOptions options;
+        options.areaTerm = areaTerm;
+        options.relativeTolerance = 1e-12;
+        options.maxIterations = 5000;
+        const double dt = stableTimeStep(m, Material{}, options).dt;
+        const std::vector<double> steps = tetStableTimeSteps(m, Material{}, options);
+        QCOMPARE(steps.size(), std::size_t(1));
+        QVERIFY2(std::abs(steps[0] - dt) <= 1e-6 * dt, qPrintable(QString("%1 vs %2").arg(steps[0]).arg(dt)));
+    }
+
+    void sliverTetsHaveTheSmallestSteps() {
+        // The squashed node of sliverMeshHasSmallerStep: the tets with the smallest own step
+        // are around it, and the smallest is within a small factor of the mesh's step.
+        TetMesh m = jitteredBox(1.0, 9, 0.0);
+        const int node = 1 + 5 * (1 + 4 * 1);
+        m.referencePositions()[node] += Vec3(0.9, 0, 0);
+        m.positions()[node] = m.ref(node);
+        computeLumpedMasses(m, Material{}.density);
+        const std::vector<double> steps = tetStableTimeSteps(m, Material{});
+        QCOMPARE(steps.size(), std::size_t(m.tetCount()));
+        const int worst = static_cast<int>(std::min_element(steps.begin(), steps.end()) - steps.begin());
+        const Tet& q = m.tet(worst);
+        QVERIFY(std::find(q.begin(), q.end(), node) != q.end());
+        const double dt = stableTimeStep(m, Material{}).dt;
+        QVERIFY2(steps[worst] > 0.2 * dt && steps[worst] < 5 * dt,
+                 qPrintable(QString("%1 vs %2").arg(steps[worst]).arg(dt)));
+        // Tets away from the node keep the step of the regular box (about 10x larger).
+        const double regular = stableTimeStep(jitteredBox(1.0, 9, 0.0), Material{}).dt;
+        int far = 0;
+        for (int t = 0; t < m.tetCount(); ++t) {
+            const Tet& r = m.tet(t);
+            if (std::find(r.begin(), r.end(), node) != r.end())
+                continue;
+            QVERIFY2(steps[t] > 3 * steps[worst], qPrintable(QString("tet %1: %2").arg(t).arg(steps[t])));
+            QVERIFY(steps[t] > 0.3 * regular);
+            ++far;
+        }
+        QVERIFY(far > 0);
     }
 };
 

@@ -431,6 +431,41 @@ private slots:
         QCOMPARE(tissue.cutCount(), 0);
     }
 
+    void replacedAnchorsAreCreatesAnchors() {
+        // Re-anchoring an uncut tissue (the studio's fixed-region edits) gives the tissue that
+        // create() makes with the new anchors: it cuts and resects identically.
+        Tissue unanchored;
+        QVERIFY(Tissue::create(polyp(1).mesh, polyp(1).surface, Material{}, {}, unanchored).ok());
+        QVERIFY(unanchored.anchors().empty());
+        QVERIFY(unanchored.setAnchors(baseAnchors(1)).ok());
+        Tissue created = makeTissue(1);
+        QCOMPARE(unanchored.anchors().nodes(), created.anchors().nodes());
+        QVERIFY(!unanchored.anchors().empty());
+        for (Tissue* t : {&unanchored, &created}) {
+            t->setResectedPieces(ResectedPieces::Remove);
+            QVERIFY(t->cut(planeAt(15, 1), CutOptions{}).ok());
+        }
+        QCOMPARE(unanchored.chips().size(), std::size_t(1));
+        const QString diff = TissueSnapshot(unanchored).differenceTo(TissueSnapshot(created));
+        QVERIFY2(diff.isEmpty(), qPrintable(diff));
+
+        // Refused on a cut or simulated tissue, and for nodes outside the mesh; unchanged then.
+        const std::vector<int> before = created.anchors().nodes();
+        Status s = created.setAnchors({});
+        QVERIFY(!s.ok());
+        QVERIFY2(s.message().find("cut") != std::string::npos, s.message().c_str());
+        QCOMPARE(created.anchors().nodes(), before);
+        Tissue simulated = makeTissue(1, false);
+        QVERIFY(simulated.startSimulation(sceneSetup()).ok());
+        QVERIFY(!simulated.setAnchors({}).ok());
+        Tissue fresh = makeTissue(1, false);
+        FixedSelection bad;
+        bad.nodes = {100000};
+        const std::vector<int> anchored = fresh.anchors().nodes();
+        QVERIFY(!fresh.setAnchors(bad).ok());
+        QCOMPARE(fresh.anchors().nodes(), anchored);
+    }
+
     void takeMeshLeavesAnEmptyTissue() {
         Tissue tissue = makeTissue(1, false);
         QVERIFY(tissue.cut(planeAt(15, 1), CutOptions{}).ok());
