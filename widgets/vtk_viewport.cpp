@@ -42,6 +42,9 @@ constexpr double kZoomPerWheelStep = 1.1;
 /// An oblique default view: looking along +y, slightly from above and the side, z up.
 constexpr std::array<double, 3> kStartingDirection{-0.45, 1.0, -0.35};
 constexpr std::array<double, 3> kStartingUp{0.0, 0.0, 1.0};
+/// Share of the width, centred, that framing uses while a colour legend is shown (the
+/// legend starts at 0.8 of the width; 0.56 leaves the tissue's right edge at 0.78).
+constexpr double kLegendFreeShare = 0.56;
 
 } // namespace
 
@@ -198,7 +201,14 @@ void VtkViewport::resetCamera() {
     const Bounds bounds = sceneBounds();
     if (!validBounds(bounds))
         return;
-    const double aspect = height() > 0 ? double(width()) / double(height()) : 1.0;
+    double aspect = height() > 0 ? double(width()) / double(height()) : 1.0;
+    // A visible colour legend (QualityLegend: a scalar bar from 0.8 of the width rightwards)
+    // must not cover the tissue: frame it into the middle kLegendFreeShare of the width.
+    for (vtkProp* prop : m_props)
+        if (prop->IsA("vtkScalarBarActor") && prop->GetVisibility()) {
+            aspect *= kLegendFreeShare;
+            break;
+        }
     m_camera.reset(bounds, aspect);
     cameraMoved();
 }

@@ -71,7 +71,8 @@ public:
     void setTool(ViewportTool* tool);
     ViewportTool* tool() const { return m_tool; }
 
-    /// Frames the bounds of everything shown, keeping the view direction.
+    /// Frames the bounds of everything shown, keeping the view direction (clear of a visible
+    /// colour legend on the right).
     void resetCamera();
     /// The starting view (the oblique default direction, z up), framing the scene: what
     /// View > Reset camera does. resetCamera() keeps the current direction.

@@ -5,6 +5,7 @@
 #include "core/mesh/tet_mesh.h"
 #include "core/mesh/triangle_surface.h"
 #include "widgets/opengl_support.h"
+#include "widgets/camera_ray.h"
 #include "widgets/vtk_viewport.h"
 
 #include <QApplication>
@@ -17,6 +18,8 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkImageData.h>
+#include <vtkScalarBarActor.h>
+#include <vtkSmartPointer.h>
 #include <vtkTexture.h>
 
 #include <array>
@@ -57,6 +60,37 @@ class TestVtkViewport : public QObject {
     Q_OBJECT
 
 private slots:
+    void framingKeepsClearOfAVisibleLegend() {
+        // Issue 19: in a narrow view the framed tissue reached the colour legend (a scalar bar
+        // from 0.8 of the width rightwards). With a legend shown, framing keeps the tissue left
+        // of it; without one, the tissue uses the width.
+        VtkViewport view;
+        view.resize(300, 600);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        const TetMesh mesh = makeBoxTetMesh(Vec3::Zero(), Vec3(10, 10, 10), 3, 3, 3);
+        view.setTetMesh(mesh);
+        const auto rightEdge = [&] {
+            double right = 0;
+            for (const Vec3& p : mesh.referencePositions())
+                if (const auto pixel = worldToPixel(view.camera(), view.size(), p))
+                    right = std::max(right, pixel->x());
+            return right / view.width();
+        };
+        view.resetCamera();
+        const double bare = rightEdge();
+        auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
+        view.addProp(bar);
+        view.resetCamera();
+        const double withLegend = rightEdge();
+        QVERIFY2(withLegend < 0.8, qPrintable(QString::number(withLegend)));
+        QVERIFY2(bare > 0.8, qPrintable(QString::number(bare)));
+        bar->SetVisibility(false); // a hidden legend takes no room
+        view.resetCamera();
+        QCOMPARE(rightEdge(), bare);
+        view.removeProp(bar);
+    }
+
     void offscreenHasNoRendering();
     void placeholderIsShown();
     void setTetMeshShowsBoundary();
