@@ -42,9 +42,11 @@ constexpr double kZoomPerWheelStep = 1.1;
 /// An oblique default view: looking along +y, slightly from above and the side, z up.
 constexpr std::array<double, 3> kStartingDirection{-0.45, 1.0, -0.35};
 constexpr std::array<double, 3> kStartingUp{0.0, 0.0, 1.0};
-/// Share of the width, centred, that framing uses while a colour legend is shown (the
-/// legend starts at 0.8 of the width; 0.56 leaves the tissue's right edge at 0.78).
-constexpr double kLegendFreeShare = 0.56;
+/// Share of the width, centred, into which framing fits the scene's bounding sphere while a
+/// colour legend is shown (the legend starts at 0.8 of the width). The sphere is wider than
+/// any outline in it, so 0.75 keeps a cube's outline left of 0.8 (0.6 would be exact for the
+/// sphere, but shrinks the tissue to a third of the view).
+constexpr double kLegendFreeShare = 0.75;
 
 } // namespace
 
