@@ -4,6 +4,15 @@
 
 namespace resect {
 
+double surfaceArea(const TriangleSurface& surface) {
+    double area = 0.0;
+    for (const Tri& t : surface.triangles) {
+        const Vec3& a = surface.positions[t[0]];
+        area += 0.5 * (surface.positions[t[1]] - a).cross(surface.positions[t[2]] - a).norm();
+    }
+    return area;
+}
+
 double enclosedVolume(const TriangleSurface& surface) {
     // Sum relative to the centroid of the first vertex keeps cancellation small for models
     // far from the origin.

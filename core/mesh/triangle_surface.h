@@ -34,6 +34,9 @@ struct TriangleSurface {
 /// sum over triangles of p0 . (p1 x p2) / 6). Meaningless for open surfaces.
 double enclosedVolume(const TriangleSurface& surface);
 
+/// Sum of the triangles' areas.
+double surfaceArea(const TriangleSurface& surface);
+
 /// Axis-aligned bounding box of the positions; {min, max}. Both zero for an empty surface.
 std::array<Vec3, 2> boundingBox(std::span<const Vec3> points);
 

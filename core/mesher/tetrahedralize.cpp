@@ -180,11 +180,7 @@ Status cancelledStatus() {
 /// h covering the surface area A, 4 A / (sqrt(3) h^2) (each is the face of one tet).
 double estimatedTets(const TriangleSurface& surface, double h) {
     const double volume = std::abs(enclosedVolume(surface));
-    double area = 0.0;
-    for (const Tri& t : surface.triangles) {
-        const Vec3& a = surface.positions[t[0]];
-        area += 0.5 * (surface.positions[t[1]] - a).cross(surface.positions[t[2]] - a).norm();
-    }
+    const double area = surfaceArea(surface);
     const double byVolume = volume / (kMeanTetVolumePerCubedEdge * h * h * h);
     const double byArea = 4.0 * area / (std::sqrt(3.0) * h * h);
     return std::max(byVolume, byArea);
@@ -261,11 +257,7 @@ double defaultEdgeLength(const TriangleSurface& surface) {
     // diameter) spans kEdgesPerThickness edges. Coarser, its mesh is all boundary, and
     // half the edge length gives only 3-4 times the tets (the corpus femur). The samples
     // have 2.4 (polyp) and 3.7 (myoma) edges in theirs, so the cap leaves them alone.
-    double area = 0.0;
-    for (const Tri& t : surface.triangles) {
-        const Vec3& a = surface.positions[t[0]];
-        area += 0.5 * (surface.positions[t[1]] - a).cross(surface.positions[t[2]] - a).norm();
-    }
+    const double area = surfaceArea(surface);
     const double thickness = 3.0 * std::abs(enclosedVolume(surface)) / area;
     // At most kMaxThicknessRefinement times finer than the box alone says: a thin-walled
     // part (CGAL's cheese.off) would otherwise get tens of thousands of tets.
