@@ -14,6 +14,8 @@
 #include "widgets/tissue_display.h"
 #include "widgets/vtk_viewport.h"
 
+#include "tests/widgets/drawn_pieces.h"
+
 #include <QTest>
 
 #include <vtkActor.h>
@@ -87,52 +89,6 @@ vtkDataArray* cellArray(vtkPolyData* poly, const char* name) {
     return poly->GetCellData()->GetArray(name);
 }
 
-/// The colours ("piece_colour", as bytes) of the drawn cells of both actors, by piece.
-std::map<int, std::set<std::array<int, 3>>> coloursByPiece(VtkViewport& view) {
-    std::map<int, std::set<std::array<int, 3>>> out;
-    for (TetMeshActor* actor : {&view.tetMeshActor(), &view.chipsActor()}) {
-        vtkPolyData* poly = actor->boundary();
-        vtkDataArray* piece = cellArray(poly, kPieceArray);
-        vtkDataArray* colour = cellArray(poly, kPieceColourArray);
-        if (poly->GetNumberOfCells() == 0)
-            continue;
-        if (piece == nullptr || colour == nullptr)
-            qFatal("no piece arrays");
-        for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c) {
-            double rgb[3];
-            colour->GetTuple(c, rgb);
-            out[int(piece->GetTuple1(c))].insert({int(rgb[0]), int(rgb[1]), int(rgb[2])});
-        }
-    }
-    return out;
-}
-
-/// Centroid of the points of the drawn cells of `piece` in both actors (display coordinates).
-Vec3 drawnCentroid(VtkViewport& view, int piece) {
-    Vec3 sum = Vec3::Zero();
-    int count = 0;
-    for (TetMeshActor* actor : {&view.tetMeshActor(), &view.chipsActor()}) {
-        vtkPolyData* poly = actor->boundary();
-        if (poly->GetNumberOfCells() == 0)
-            continue;
-        vtkDataArray* pieces = cellArray(poly, kPieceArray);
-        vtkIdType n = 0;
-        const vtkIdType* pts = nullptr;
-        for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c) {
-            if (int(pieces->GetTuple1(c)) != piece)
-                continue;
-            poly->GetPolys()->GetCellAtId(c, n, pts);
-            for (vtkIdType k = 0; k < n; ++k) {
-                double p[3];
-                poly->GetPoint(pts[k], p);
-                sum += Vec3(p[0], p[1], p[2]);
-                ++count;
-            }
-        }
-    }
-    return count > 0 ? Vec3(sum / count) : Vec3::Constant(std::nan(""));
-}
-
 std::array<int, 3> bytes(const Rgb& c) {
     return {int(std::lround(255 * c[0])), int(std::lround(255 * c[1])),
             int(std::lround(255 * c[2]))};
@@ -192,7 +148,7 @@ private slots:
         QCOMPARE(actor.actor()->GetMapper()->GetColorMode(), VTK_COLOR_MODE_DIRECT_SCALARS);
         legend.update(actor);
         QVERIFY(!legend.visible());
-        const auto colours = coloursByPiece(s.viewport);
+        const auto colours = test::drawnColoursByPiece(s.viewport);
         QCOMPARE(int(colours.size()), 2);
         // One colour per piece, the palette's, and different pieces differ.
         std::set<std::array<int, 3>> all;
@@ -285,13 +241,13 @@ private slots:
         QCOMPARE(s.display.resected(), TissueDisplay::Resected::Dimmed);
         QVERIFY(chips.actor()->GetVisibility());
         QVERIFY(chips.fade() > 0);
-        const auto dimmed = coloursByPiece(s.viewport);
+        const auto dimmed = test::drawnColoursByPiece(s.viewport);
         QVERIFY(*dimmed.at(1).begin() != bytes(piecePalette(1)));
         QCOMPARE(*dimmed.at(0).begin(), bytes(piecePalette(0))); // the tissue is not dimmed
 
         s.display.setResected(TissueDisplay::Resected::Shown);
         QCOMPARE(chips.fade(), 0.0);
-        QCOMPARE(*coloursByPiece(s.viewport).at(1).begin(), bytes(piecePalette(1)));
+        QCOMPARE(*test::drawnColoursByPiece(s.viewport).at(1).begin(), bytes(piecePalette(1)));
 
         s.display.setResected(TissueDisplay::Resected::Hidden);
         QVERIFY(!chips.actor()->GetVisibility());
@@ -323,19 +279,19 @@ private slots:
         const std::vector<Vec3> surfacePositions = tissue.surface().surface().positions;
         Scene s(tissue);
         s.display.setResected(TissueDisplay::Resected::Shown);
-        const double apart0 = (drawnCentroid(s.viewport, 0) - drawnCentroid(s.viewport, 1)).norm();
+        const double apart0 = (test::drawnCentroid(s.viewport, 0) - test::drawnCentroid(s.viewport, 1)).norm();
         const Bounds before = s.viewport.sceneBounds();
         double previous = apart0;
         for (double f : {0.5, 1.0, TissueDisplay::kMaxExplode}) {
             s.display.setExplode(f);
             const double apart =
-                (drawnCentroid(s.viewport, 0) - drawnCentroid(s.viewport, 1)).norm();
+                (test::drawnCentroid(s.viewport, 0) - test::drawnCentroid(s.viewport, 1)).norm();
             QVERIFY2(apart > previous + 0.1 * apart0,
                      qPrintable(QString("%1: %2 after %3").arg(f).arg(apart).arg(previous)));
             previous = apart;
         }
         // Along the line between the centroids: the head moves up, the stalk down.
-        QVERIFY(drawnCentroid(s.viewport, 1).z() > drawnCentroid(s.viewport, 0).z());
+        QVERIFY(test::drawnCentroid(s.viewport, 1).z() > test::drawnCentroid(s.viewport, 0).z());
         // The scene's bounds take the exploded pieces in (the camera's clipping range).
         const Bounds after = s.viewport.sceneBounds();
         QVERIFY(after[5] - after[4] > before[5] - before[4]);
@@ -351,7 +307,7 @@ private slots:
         QVERIFY(surfacePositions == tissue.surface().surface().positions);
         // Back to 0: drawn where they are.
         s.display.setExplode(0);
-        QVERIFY(std::abs((drawnCentroid(s.viewport, 0) - drawnCentroid(s.viewport, 1)).norm() -
+        QVERIFY(std::abs((test::drawnCentroid(s.viewport, 0) - test::drawnCentroid(s.viewport, 1)).norm() -
                          apart0) < 1e-9 * apart0);
         for (int n = 0; n < tissue.mesh().nodeCount(); ++n)
             QCOMPARE(s.viewport.tetMeshActor().displayedPosition(n), tissue.mesh().pos(n));

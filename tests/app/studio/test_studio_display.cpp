@@ -18,6 +18,7 @@
 #include "widgets/tissue_session.h"
 #include "widgets/vtk_viewport.h"
 
+#include "tests/widgets/drawn_pieces.h"
 #include "tests/widgets/sweep_fixtures.h"
 
 #include <QAction>
@@ -91,50 +92,6 @@ struct Studio {
     VtkViewport& view() { return *window.viewport(); }
 };
 
-/// The pieces drawn (both actors) and their "piece_colour" colours.
-std::map<int, std::set<std::array<int, 3>>> drawnColours(VtkViewport& view) {
-    std::map<int, std::set<std::array<int, 3>>> out;
-    for (TetMeshActor* actor : {&view.tetMeshActor(), &view.chipsActor()}) {
-        vtkPolyData* poly = actor->boundary();
-        if (!actor->actor()->GetVisibility() || poly->GetNumberOfCells() == 0)
-            continue;
-        vtkDataArray* piece = poly->GetCellData()->GetArray(kPieceArray);
-        vtkDataArray* colour = poly->GetCellData()->GetArray(kPieceColourArray);
-        for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c) {
-            double rgb[3];
-            colour->GetTuple(c, rgb);
-            out[int(piece->GetTuple1(c))].insert({int(rgb[0]), int(rgb[1]), int(rgb[2])});
-        }
-    }
-    return out;
-}
-
-/// Centroid of the drawn points of `piece` (display coordinates, both actors).
-Vec3 drawnCentroid(VtkViewport& view, int piece) {
-    Vec3 sum = Vec3::Zero();
-    int count = 0;
-    for (TetMeshActor* actor : {&view.tetMeshActor(), &view.chipsActor()}) {
-        vtkPolyData* poly = actor->boundary();
-        if (poly->GetNumberOfCells() == 0)
-            continue;
-        vtkDataArray* pieces = poly->GetCellData()->GetArray(kPieceArray);
-        vtkIdType n = 0;
-        const vtkIdType* pts = nullptr;
-        for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c) {
-            if (int(pieces->GetTuple1(c)) != piece)
-                continue;
-            poly->GetPolys()->GetCellAtId(c, n, pts);
-            for (vtkIdType k = 0; k < n; ++k) {
-                double p[3];
-                poly->GetPoint(pts[k], p);
-                sum += Vec3(p[0], p[1], p[2]);
-                ++count;
-            }
-        }
-    }
-    return sum / std::max(count, 1);
-}
-
 } // namespace
 
 class TestStudioDisplay : public QObject {
@@ -181,7 +138,7 @@ private slots:
         s.action("colorByPiece")->trigger();
         QCOMPARE(s.view().tetMeshActor().colorMode(), TetColorMode::Piece);
         QVERIFY(!s.window.qualityPanel()->legend().visible()); // no quality scale for piece colours
-        const auto colours = drawnColours(s.view());
+        const auto colours = test::drawnColoursByPiece(s.view());
         QCOMPARE(int(colours.size()), 2);
         std::set<std::array<int, 3>> distinct;
         for (const auto& [piece, set] : colours)
@@ -228,7 +185,7 @@ private slots:
         // Four pieces, each in its colour when shown.
         s.action("resectedShown")->trigger();
         s.action("colorByPiece")->trigger();
-        QCOMPARE(int(drawnColours(s.view()).size()), 4);
+        QCOMPARE(int(test::drawnColoursByPiece(s.view()).size()), 4);
         QVERIFY(!s.window.document().isModified()); // display only
     }
 
@@ -244,7 +201,7 @@ private slots:
             // The mean distance of the pieces' drawn centroids from the stump's.
             double d = 0;
             for (int p = 1; p < pieces; ++p)
-                d += (drawnCentroid(s.view(), p) - drawnCentroid(s.view(), 0)).norm();
+                d += (test::drawnCentroid(s.view(), p) - test::drawnCentroid(s.view(), 0)).norm();
             return d / (pieces - 1);
         };
         const double before = spread();
