@@ -178,4 +178,16 @@ void EmbeddedSurface::followRemesh(const TetMesh& mesh, const RemeshRecord& reco
     m_binding.rebindAfterRemesh(mesh, record.vertices, record.positions, candidates, newTet);
 }
 
+void EmbeddedSurface::followRemesh(const TetMesh& mesh, const RemeshRecord& record, const MeshRenumbering& r) {
+    if (empty()) return;
+    std::vector<int> newTet, newNode;
+    if (!r.empty()) {
+        newTet.resize(r.tets.oldCount);
+        for (int t = 0; t < r.tets.oldCount; ++t) newTet[t] = r.tets(t);
+        newNode.resize(r.nodes.oldCount);
+        for (int n = 0; n < r.nodes.oldCount; ++n) newNode[n] = r.nodes(n);
+    }
+    followRemesh(mesh, record, newTet, newNode);
+}
+
 } // namespace resect

@@ -9,6 +9,7 @@
 // (SurfaceBinding::bindNewVertices).
 
 #include "core/embed/binding.h"
+#include "core/mesh/renumbering.h"
 #include "core/embed/cut_surface.h"
 
 namespace resect {
@@ -57,6 +58,7 @@ public:
     RemeshRecord recordAround(const TetMesh& mesh, const std::vector<int>& tets) const;
     void followRemesh(const TetMesh& mesh, const RemeshRecord& record, const std::vector<int>& newTet,
                       const std::vector<int>& newNode);
+    void followRemesh(const TetMesh& mesh, const RemeshRecord& record, const MeshRenumbering& renumbering);
 
     bool empty() const { return m_surface.triangles.empty(); }
     const TriangleSurface& surface() const { return m_surface; }
