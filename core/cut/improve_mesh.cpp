@@ -114,6 +114,87 @@ std::array<double, 4> referenceBarycentric(const TetMesh& m, const Tet& q, const
     return barycentric(m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3]), p);
 }
 
+/// Where the element in each slot of a TetMesh array (tets or nodes) came from, recorded only
+/// for the slots that changed: a slot absent from the map holds what it held at the start (a
+/// slot past the start's count: a new element). Removal moves the last element into the freed
+/// slot (TetMesh::removeTet / removeNode), so the map holds about two entries per removal and
+/// costs nothing in the size of the mesh.
+class SlotOrigins {
+public:
+    explicit SlotOrigins(int countAtStart) : m_start(countAtStart) {}
+
+    bool changed() const { return m_changed; }
+    /// The index at the start of the element in `slot`, or -1 for a new one.
+    int originOf(int slot) const {
+        const auto it = m_map.find(slot);
+        return it != m_map.end() ? it->second : defaultOf(slot);
+    }
+    /// `slot` now holds the element that had index `origin` at the start (-1: a new one).
+    void set(int slot, int origin) {
+        m_changed = true;
+        if (origin == defaultOf(slot))
+            m_map.erase(slot);
+        else
+            m_map[slot] = origin;
+    }
+    /// The element in `slot` was removed from `count` elements: the last one took its slot.
+    void remove(int slot, int count) {
+        const int last = count - 1;
+        set(slot, originOf(last));
+        if (last != slot)
+            m_map.erase(last);
+    }
+    /// Old index -> new index for the elements whose index changed (-1: gone), sorted.
+    SparseRenumbering renumbering(int finalCount) const {
+        SparseRenumbering r;
+        r.oldCount = m_start;
+        r.newCount = finalCount;
+        if (!m_changed)
+            return r;
+        std::unordered_map<int, int> newOf;  // old index -> slot, for the elements that moved
+        std::vector<int> candidates;
+        for (const auto& [slot, origin] : m_map) {
+            if (origin >= 0 && slot < finalCount) {
+                newOf[origin] = slot;
+                candidates.push_back(origin);
+            }
+            if (slot < m_start)
+                candidates.push_back(slot);  // its old element moved away or is gone
+        }
+        for (int i = finalCount; i < m_start; ++i)
+            candidates.push_back(i);  // slots cut off at the end
+        std::sort(candidates.begin(), candidates.end());
+        candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+        for (int old : candidates) {
+            const auto it = newOf.find(old);
+            const int now = it != newOf.end() ? it->second : (old < finalCount && !m_map.count(old) ? old : -1);
+            if (now != old)
+                r.changed.emplace_back(old, now);
+        }
+        return r;
+    }
+    /// The slots (below finalCount) that hold new elements, sorted.
+    std::vector<int> newSlots(int finalCount) const {
+        std::vector<int> out;
+        for (const auto& [slot, origin] : m_map)
+            if (origin < 0 && slot < finalCount)
+                out.push_back(slot);
+        for (int i = m_start; i < finalCount; ++i)
+            if (!m_map.count(i))
+                out.push_back(i);
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+        return out;
+    }
+
+private:
+    int defaultOf(int slot) const { return slot < m_start ? slot : -1; }
+
+    int m_start;
+    bool m_changed = false;
+    std::unordered_map<int, int> m_map;
+};
+
 struct Face {
     Tri nodes;  ///< outward
 };
@@ -122,7 +203,7 @@ class Pass {
 public:
     Pass(TetMesh& mesh, const ImproveRegion& region, const ImproveOptions& options, ImproveResult& result)
         : m(mesh), o(options), r(result), editable(region.nodes.begin(), region.nodes.end()),
-          nodes(region.nodes), tetsAtStart(mesh.tetCount()) {
+          nodes(region.nodes), tetOrigin(mesh.tetCount()), nodeOrigin(mesh.nodeCount()) {
         flippable = editable;
         flippable.insert(region.fixed.begin(), region.fixed.end());
         fixedInRegion = region.fixed;
@@ -152,8 +233,7 @@ private:
     std::vector<int> fixedInRegion;
     std::unordered_map<int, int> mergedInto;     ///< collapsed node -> node it merged into
     std::unordered_set<int> moved, touched;
-    std::vector<int> tetOrigin;                  ///< slot -> tet index at the start, -1 for new tets (once tets change)
-    int tetsAtStart = 0;
+    SlotOrigins tetOrigin, nodeOrigin;           ///< what each changed slot held at the start
 
     bool alive(int n) const { return !mergedInto.count(n); }
 
@@ -183,26 +263,41 @@ private:
     /// Faces of the given tets that contain node x and occur once among them (the boundary of
     /// x's star when `tets` are all of x's tets), oriented outward.
     static std::vector<Face> boundaryFacesAt(const std::vector<Tet>& tets, int x) {
-        std::vector<std::pair<Tri, Tri>> all;  // (sorted nodes, oriented face)
+        // Every face here contains x, so its other two nodes (u < v) identify it: faces are
+        // matched on one 64-bit key. The few that occur once are then put in the order of their
+        // sorted node triples (what callers iterate in; sums over them depend on the order).
+        struct Entry {
+            std::uint64_t key;
+            Tri face;
+            bool operator<(const Entry& e) const { return key < e.key; }
+        };
+        thread_local std::vector<Entry> all;
+        all.clear();
         for (const Tet& q : tets)
             for (const auto& lf : kTetFaces) {
                 const Tri f{q[lf[0]], q[lf[1]], q[lf[2]]};
-                if (f[0] != x && f[1] != x && f[2] != x)
+                const int i = f[0] == x ? 0 : f[1] == x ? 1 : f[2] == x ? 2 : -1;
+                if (i < 0)
                     continue;
-                Tri sorted = f;
-                std::sort(sorted.begin(), sorted.end());
-                all.emplace_back(sorted, f);
+                const int u = f[(i + 1) % 3], v = f[(i + 2) % 3];
+                all.push_back({linkEdge(u, v), f});
             }
         std::sort(all.begin(), all.end());
         std::vector<Face> faces;
         for (std::size_t i = 0; i < all.size();) {
             std::size_t j = i + 1;
-            while (j < all.size() && all[j].first == all[i].first)
+            while (j < all.size() && all[j].key == all[i].key)
                 ++j;
             if (j == i + 1)
-                faces.push_back({all[i].second});
+                faces.push_back({all[i].face});
             i = j;
         }
+        const auto sorted = [](const Face& f) {
+            Tri t = f.nodes;
+            std::sort(t.begin(), t.end());
+            return t;
+        };
+        std::sort(faces.begin(), faces.end(), [&](const Face& p, const Face& q) { return sorted(p) < sorted(q); });
         return faces;
     }
 
@@ -277,9 +372,10 @@ private:
         return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a + 1)) << 32) |
                static_cast<std::uint32_t>(b + 1);
     }
-    Link linkOfNode(int x) const {
+    /// The link of x; its star and the star's boundary faces at x go to `star` and `faces`.
+    Link linkOfNode(int x, std::vector<Tet>& star, std::vector<Face>& faces) const {
         Link l;
-        const std::vector<Tet> star = starOf(x);
+        star = starOf(x);
         for (const Tet& q : star) {
             int o3[3], k = 0;
             for (int v : q)
@@ -290,7 +386,8 @@ private:
             l.edges.push_back(linkEdge(o3[0], o3[2]));
             l.edges.push_back(linkEdge(o3[1], o3[2]));
         }
-        for (const Face& f : boundaryFacesAt(star, x)) {
+        faces = boundaryFacesAt(star, x);
+        for (const Face& f : faces) {
             l.verts.push_back(kOmega);
             for (int v : f.nodes)
                 if (v != x)
@@ -300,9 +397,10 @@ private:
         return l;
     }
     bool linkCondition(int a, int b) const {
-        const Link la = linkOfNode(a), lb = linkOfNode(b);
+        std::vector<Tet> starA, starB;
+        std::vector<Face> facesA, facesB;
+        const Link la = linkOfNode(a, starA, facesA), lb = linkOfNode(b, starB, facesB);
         Link lab;
-        std::vector<Tet> starA = starOf(a);
         for (const Tet& q : starA) {
             if (std::find(q.begin(), q.end(), b) == q.end())
                 continue;
@@ -313,7 +411,7 @@ private:
             lab.verts.insert(lab.verts.end(), o2, o2 + 2);
             lab.edges.push_back(linkEdge(o2[0], o2[1]));
         }
-        for (const Face& f : boundaryFacesAt(starA, a)) {
+        for (const Face& f : facesA) {
             const bool hasB = f.nodes[0] == b || f.nodes[1] == b || f.nodes[2] == b;
             if (!hasB)
                 continue;
@@ -527,17 +625,8 @@ private:
         return true;
     }
 
-    void trackTets() {
-        if (tetOrigin.empty()) {
-            tetOrigin.resize(m.tetCount());
-            std::iota(tetOrigin.begin(), tetOrigin.end(), 0);
-        }
-    }
-
     void removeTet(int t) {
-        trackTets();
-        tetOrigin[t] = tetOrigin.back();
-        tetOrigin.pop_back();
+        tetOrigin.remove(t, m.tetCount());
         m.removeTet(t);
         ++r.removedTets;
     }
@@ -644,7 +733,6 @@ private:
     }
 
     void replaceTets(const std::vector<int>& old, const std::vector<Tet>& created) {
-        trackTets();
         for (const Tet& q : created)
             touched.insert(q.begin(), q.end());
         std::vector<int> slots = old;
@@ -652,11 +740,11 @@ private:
         const std::size_t common = std::min(slots.size(), created.size());
         for (std::size_t i = 0; i < common; ++i) {
             m.replaceTet(slots[i], created[i]);
-            tetOrigin[slots[i]] = -1;
+            tetOrigin.set(slots[i], -1);
         }
         for (std::size_t i = common; i < created.size(); ++i) {
+            tetOrigin.set(m.tetCount(), -1);
             m.addTet(created[i]);
-            tetOrigin.push_back(-1);
         }
         for (std::size_t i = common; i < slots.size(); ++i)
             removeTet(slots[i]);
@@ -1021,38 +1109,28 @@ private:
         std::vector<int> dead;
         for (const auto& [n, into] : mergedInto)
             dead.push_back(n);
-        const bool renumber = !tetOrigin.empty() || !dead.empty();
-        std::vector<int> nodeOrigin;
-        if (renumber) {
-            nodeOrigin.resize(m.nodeCount());
-            std::iota(nodeOrigin.begin(), nodeOrigin.end(), 0);
-            std::sort(dead.rbegin(), dead.rend());
-            for (int n : dead) {
-                nodeOrigin[n] = nodeOrigin.back();
-                nodeOrigin.pop_back();
-                m.removeNode(n);
-                ++r.removedNodes;
-            }
-            const int nodesBefore = static_cast<int>(nodeOrigin.size()) + static_cast<int>(dead.size());
-            r.newNode.assign(nodesBefore, -1);
-            for (int s = 0; s < static_cast<int>(nodeOrigin.size()); ++s)
-                r.newNode[nodeOrigin[s]] = s;
-            for (int n : dead) {
-                int into = n;
-                while (mergedInto.count(into))
-                    into = mergedInto.at(into);
-                r.newNode[n] = r.newNode[into];
-            }
-            if (tetOrigin.empty()) {
-                tetOrigin.resize(m.tetCount());
-                std::iota(tetOrigin.begin(), tetOrigin.end(), 0);
-            }
-            r.newTet.assign(tetsAtStart, -1);
-            for (int s = 0; s < static_cast<int>(tetOrigin.size()); ++s)
-                if (tetOrigin[s] >= 0)
-                    r.newTet[tetOrigin[s]] = s;
+        std::sort(dead.rbegin(), dead.rend());  // highest first: the last node never is a dead one
+        for (int n : dead) {
+            nodeOrigin.remove(n, m.nodeCount());
+            m.removeNode(n);
+            ++r.removedNodes;
         }
-        const auto map = [&](int n) { return renumber ? r.newNode[n] : n; };
+        if (tetOrigin.changed() || nodeOrigin.changed()) {
+            r.renumbering.tets = tetOrigin.renumbering(m.tetCount());
+            r.createdTets = tetOrigin.newSlots(m.tetCount());
+            const SparseRenumbering survivors = nodeOrigin.renumbering(m.nodeCount());
+            SparseRenumbering nodeMap = survivors;
+            // A collapsed node stands for the node it merged into.
+            for (auto& [old, now] : nodeMap.changed)
+                if (now < 0 && mergedInto.count(old)) {
+                    int into = old;
+                    while (mergedInto.count(into))
+                        into = mergedInto.at(into);
+                    now = survivors(into);
+                }
+            r.renumbering.nodes = std::move(nodeMap);
+        }
+        const auto map = [&](int n) { return r.renumbering.nodes(n); };
         for (int n : moved)
             r.movedNodes.push_back(map(n));
         for (int n : touched)

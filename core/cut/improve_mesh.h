@@ -33,6 +33,7 @@
 // unchanged up to rounding; no tet straddles a cut (collapses and moves stay within the
 // pieces they start in).
 
+#include "core/mesh/renumbering.h"
 #include "core/mesh/tet_mesh.h"
 
 #include <array>
@@ -95,11 +96,14 @@ struct ImproveResult {
     /// Final indices of the nodes that moved (smoothing, merged nodes) and of every node whose
     /// tets changed (their masses were updated); sorted.
     std::vector<int> movedNodes, touchedNodes;
-    /// Only when something was removed (else empty): old tet -> new tet (-1: removed), old node
-    /// -> new index of the node standing for it (a collapsed node maps to the node it merged
-    /// into). Removal lets the last tets and nodes take the freed indices.
-    std::vector<int> newTet, newNode;
-    bool renumbered() const { return !newTet.empty(); }
+    /// Only when tets changed (else empty): the indices that changed (core/mesh/renumbering.h).
+    /// Tets: old -> new, -1 for a tet removed or replaced by a flip; nodes: old -> new, a
+    /// collapsed node -> the new index of the node it merged into. Removal lets the last tets
+    /// and nodes take the freed indices, so the lists are as long as the pass's changes.
+    MeshRenumbering renumbering;
+    /// The indices (after the pass) of the tets the flips created, sorted.
+    std::vector<int> createdTets;
+    bool renumbered() const { return !renumbering.empty(); }
 };
 
 /// Improves the region (see the top of this file). Cost: in proportion to the region.

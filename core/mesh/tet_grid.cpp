@@ -78,11 +78,13 @@ void TetGrid::build(const TetMesh& mesh, double cellSize) {
                  [&](const Eigen::Array3i& c) { m_items[fill[cellIndex(c)]++] = t; });
     m_stamp.assign(mesh.tetCount(), 0);
     m_epoch = 0;
+    m_tetCount = mesh.tetCount();
 }
 
 void TetGrid::insert(const TetMesh& mesh, int tet) {
     if (empty())
         return;
+    m_tetCount = std::max(m_tetCount, tet + 1);
     const Eigen::AlignedBox3d box = tetBox(mesh, tet);
     forCells(cellOf(box.min()), cellOf(box.max()), [&](const Eigen::Array3i& c) {
         const std::int64_t cell = cellIndex(c);
@@ -92,9 +94,20 @@ void TetGrid::insert(const TetMesh& mesh, int tet) {
     });
 }
 
+void TetGrid::renumber(const TetMesh& mesh, const SparseRenumbering& tets, const std::vector<int>& created) {
+    if (empty())
+        return;
+    m_tetCount = mesh.tetCount();
+    for (const auto& [old, now] : tets.changed)
+        if (now >= 0)
+            insert(mesh, now);
+    for (int t : created)
+        insert(mesh, t);
+}
+
 TetGrid::Checkpoint TetGrid::checkpoint() {
     ++m_openCheckpoints;
-    return {m_insertLog.size()};
+    return {m_insertLog.size(), m_tetCount};
 }
 
 void TetGrid::rollback(const Checkpoint& checkpoint) {
@@ -107,6 +120,8 @@ void TetGrid::rollback(const Checkpoint& checkpoint) {
         if (it->second.empty())
             m_extra.erase(it);
     }
+    if (m_openCheckpoints > 0)          // (build() since then dropped every checkpoint)
+        m_tetCount = checkpoint.tetCount; // stale indices past it stay hidden
     release(checkpoint);
 }
 
@@ -117,6 +132,8 @@ void TetGrid::release(const Checkpoint& checkpoint) {
 
 void TetGrid::collect(std::int64_t cell, std::vector<int>& out) const {
     const auto take = [&](int t) {
+        if (t >= m_tetCount)
+            return;  // removed since it was registered
         if (t >= static_cast<int>(m_stamp.size()))
             m_stamp.resize(static_cast<std::size_t>(t) + 1 + m_stamp.size() / 2, 0);
         if (m_stamp[t] != m_epoch) {

@@ -8,6 +8,7 @@
 // cells, which cover it (sub-tets lie inside their parent). Queries are conservative: they
 // return every tet whose box overlaps the query and possibly a few more.
 
+#include "core/mesh/renumbering.h"
 #include "core/mesh/tet_mesh.h"
 
 #include <Eigen/Geometry>
@@ -22,14 +23,20 @@ class TetGrid {
 public:
     /// Cell size 0 chooses twice the mean tet bounding-box extent.
     void build(const TetMesh& mesh, double cellSize = 0);
-    /// Registers a tet appended after build() (current positions).
+    /// Registers a tet appended after build() (current positions), or a tet that took another's
+    /// index or changed shape (its old registrations stay: queries are conservative).
     void insert(const TetMesh& mesh, int tet);
+    /// After a local remeshing that removed tets (the last ones took the freed indices) and
+    /// replaced some (`created`): registers the tets that now hold a changed index. Indices at
+    /// or past the mesh's new tet count are no longer returned. O(changed tets), not O(mesh).
+    void renumber(const TetMesh& mesh, const SparseRenumbering& tets, const std::vector<int>& created);
 
     /// Undo of insert() calls, for an edit that may be rolled back (a cut): checkpoint()
     /// starts recording inserts, rollback() removes the ones made since, release() keeps them.
     /// Checkpoints nest (LIFO). build() drops every checkpoint.
     struct Checkpoint {
         std::size_t logSize = 0;
+        int tetCount = 0;
     };
     Checkpoint checkpoint();
     void rollback(const Checkpoint& checkpoint);
@@ -58,6 +65,7 @@ private:
     std::vector<int> m_start;   ///< CSR offsets per cell (size cells + 1)
     std::vector<int> m_items;   ///< tets per cell
     std::unordered_map<std::int64_t, std::vector<int>> m_extra;  ///< tets inserted later
+    int m_tetCount = 0;         ///< indices at or past it are stale (tets removed since)
     std::vector<std::int64_t> m_insertLog;  ///< cells appended to since the first open checkpoint
     int m_openCheckpoints = 0;
     mutable std::vector<std::uint32_t> m_stamp;

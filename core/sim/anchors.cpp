@@ -56,4 +56,29 @@ std::vector<int> Anchors::applyCut(const TetMesh& mesh, const CutChanges& change
     return added;
 }
 
+void Anchors::renumber(const TetMesh& mesh, const SparseRenumbering& nodes, const std::vector<int>& moved) {
+    std::vector<int> gone, added;
+    for (const auto& [old, now] : nodes.changed)
+        if (contains(old)) {
+            gone.push_back(old);
+            if (now >= 0)
+                added.push_back(now);
+        }
+    if (m_box)
+        for (int n : moved)
+            if (inBox(mesh.ref(n)))
+                added.push_back(n);
+    if (gone.empty() && added.empty())
+        return;
+    std::sort(gone.begin(), gone.end());
+    m_nodes.erase(std::remove_if(m_nodes.begin(), m_nodes.end(),
+                                 [&](int n) { return std::binary_search(gone.begin(), gone.end(), n); }),
+                  m_nodes.end());
+    std::sort(added.begin(), added.end());
+    const auto middle = static_cast<std::ptrdiff_t>(m_nodes.size());
+    m_nodes.insert(m_nodes.end(), added.begin(), added.end());
+    std::inplace_merge(m_nodes.begin(), m_nodes.begin() + middle, m_nodes.end());
+    m_nodes.erase(std::unique(m_nodes.begin(), m_nodes.end()), m_nodes.end());
+}
+
 } // namespace resect

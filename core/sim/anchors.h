@@ -7,6 +7,7 @@
 // the nodes during simulation).
 
 #include "core/cut/cut_types.h"
+#include "core/mesh/renumbering.h"
 #include "core/status.h"
 
 #include <array>
@@ -41,6 +42,12 @@ public:
     /// the nodes added (increasing; all >= changes.firstNewNode, so the list stays sorted by
     /// appending). O(new nodes).
     std::vector<int> applyCut(const TetMesh& mesh, const CutChanges& changes);
+
+    /// After a local remeshing (core/mesh/renumbering.h): anchored nodes that changed index
+    /// follow it (a node merged into another anchors that one), removed ones leave, and the
+    /// `moved` nodes (new indices) now in the box are anchored. O(anchors + changes), not
+    /// O(mesh).
+    void renumber(const TetMesh& mesh, const SparseRenumbering& nodes, const std::vector<int>& moved);
 
 private:
     bool inBox(const Vec3& p) const;

@@ -346,9 +346,11 @@ void Tissue::improve(TissueCut& result, const std::vector<int>& seeds, const Cut
     result.removedTets = r.removedTets;
     if (r.movedNodes.empty() && !r.renumbered())
         return;
-    m_surface.followRemesh(*m_mesh, record, r.newTet, r.newNode);
+    m_surface.followRemesh(*m_mesh, record, r.renumbering);
     if (r.renumbered()) {
-        renumber(r.newTet, r.newNode);
+        renumberLocally(r);
+        // The simulation is rebuilt (its effects hold per-tet and per-edge arrays that do not
+        // follow a renumbering yet), and with it the change list.
         rebuild = true;
         return;
     }
@@ -404,6 +406,48 @@ void Tissue::renumber(const std::vector<int>& newTet, const std::vector<int>& ne
     m_onCut = std::move(onCut);
     m_cutter->refreshSpatialIndex();
     m_indexStale = false;
+    std::lock_guard lock(m_pieces->mutex);
+    m_pieces->components.reset();
+}
+
+void Tissue::renumberLocally(const ImproveResult& r) {
+    const SparseRenumbering& tets = r.renumbering.tets;
+    const SparseRenumbering& nodes = r.renumbering.nodes;
+    m_anchors.renumber(*m_mesh, nodes, r.movedNodes);
+    // Per-tet and per-node marks: read every moved value before writing any.
+    std::vector<std::pair<int, Scheme>> schemes;
+    std::vector<std::pair<int, int>> tetCuts;
+    for (const auto& [old, now] : tets.changed)
+        if (now >= 0) {
+            schemes.emplace_back(now, m_schemes[old]);
+            tetCuts.emplace_back(now, m_tetCuts[old]);
+        }
+    for (int t : r.createdTets) {
+        schemes.emplace_back(t, Scheme::None);
+        tetCuts.emplace_back(t, 0);
+    }
+    m_schemes.resize(std::max<std::size_t>(m_schemes.size(), tets.newCount), Scheme::None);
+    m_tetCuts.resize(std::max<std::size_t>(m_tetCuts.size(), tets.newCount), 0);
+    for (const auto& [t, s] : schemes)
+        m_schemes[t] = s;
+    for (const auto& [t, c] : tetCuts)
+        m_tetCuts[t] = c;
+    m_schemes.resize(tets.newCount);
+    m_tetCuts.resize(tets.newCount);
+    // Node marks: a slot whose node left (moved or merged) takes its new node's mark; a node
+    // merged into another passes its mark on to it.
+    std::vector<std::pair<int, std::uint8_t>> onCut;
+    for (const auto& [old, now] : nodes.changed)
+        if (now >= 0)
+            onCut.emplace_back(now, m_onCut[old]);
+    const std::size_t nodeCount = static_cast<std::size_t>(m_mesh->nodeCount());
+    for (const auto& [old, now] : nodes.changed)
+        if (static_cast<std::size_t>(old) < nodeCount)
+            m_onCut[old] = 0;
+    for (const auto& [now, mark] : onCut)
+        m_onCut[now] = std::max(m_onCut[now], mark);
+    m_onCut.resize(nodeCount);
+    m_cutter->grid().renumber(*m_mesh, tets, r.createdTets);
     std::lock_guard lock(m_pieces->mutex);
     m_pieces->components.reset();
 }

@@ -46,6 +46,8 @@
 
 namespace resect {
 
+struct ImproveResult;
+
 /// What one Tissue::cut did.
 struct TissueCut {
     CutStats tets;           ///< the tet cut's counts and stage times (HybridCutter)
@@ -181,6 +183,9 @@ private:
     /// Anchors, schemes, cut marks, the spatial index and the pieces follow a renumbering of
     /// the tets and nodes (old -> new, -1: gone).
     void renumber(const std::vector<int>& newTet, const std::vector<int>& newNode);
+    /// The same after the improvement step's local remeshing, in proportion to what it changed
+    /// (ImproveResult::renumbering), not to the mesh.
+    void renumberLocally(const ImproveResult& r);
     /// Rebuilds the running simulation on the tissue as it is, its clock going on.
     void rebuildSimulation();
 

@@ -131,14 +131,15 @@ Tet sortedTet(Tet q) {
 }
 
 /// Empty if the result's renumbering describes `after` from `before`: without renumbering
-/// the tets are the same; with it, newNode maps onto every final node (merged nodes onto the
-/// node they merged into), newTet is injective, and every surviving tet keeps its node set
-/// (mapped through newNode).
+/// the tets are the same; with it, the node map is onto every final node (merged nodes onto the
+/// node they merged into), the tet map is injective, every surviving tet keeps its node set
+/// (mapped through the node map), the created tets are those no old tet maps to, and the maps
+/// list only indices that changed, sorted.
 QString renumberingViolations(const TetMesh& before, const TetMesh& after, const ImproveResult& r) {
     QStringList problems;
     if (!r.renumbered()) {
-        if (!r.newNode.empty())
-            problems << "newNode without newTet";
+        if (!r.renumbering.nodes.empty() || !r.createdTets.empty())
+            problems << "a node renumbering or created tets without tets changing";
         if (after.tetCount() != before.tetCount() || after.nodeCount() != before.nodeCount())
             return "counts changed without renumbering";
         for (int t = 0; t < before.tetCount(); ++t)
@@ -146,20 +147,27 @@ QString renumberingViolations(const TetMesh& before, const TetMesh& after, const
                 problems << QString("tet %1 changed without renumbering").arg(t);
         return problems.join("; ");
     }
-    if (static_cast<int>(r.newTet.size()) != before.tetCount() ||
-        static_cast<int>(r.newNode.size()) != before.nodeCount())
-        return QString("map sizes %1, %2 for %3 tets, %4 nodes")
-            .arg(r.newTet.size())
-            .arg(r.newNode.size())
-            .arg(before.tetCount())
-            .arg(before.nodeCount());
+    const SparseRenumbering &tets = r.renumbering.tets, &nodes = r.renumbering.nodes;
+    if (tets.oldCount != before.tetCount() || nodes.oldCount != before.nodeCount() ||
+        tets.newCount != after.tetCount() || nodes.newCount != after.nodeCount())
+        return QString("counts %1 -> %2 tets, %3 -> %4 nodes for %5 -> %6, %7 -> %8")
+            .arg(tets.oldCount).arg(tets.newCount).arg(nodes.oldCount).arg(nodes.newCount)
+            .arg(before.tetCount()).arg(after.tetCount()).arg(before.nodeCount()).arg(after.nodeCount());
+    // Sparse: only changed indices, sorted, each once.
+    for (const SparseRenumbering* map : {&tets, &nodes})
+        for (std::size_t i = 0; i < map->changed.size(); ++i) {
+            if (map->changed[i].first == map->changed[i].second)
+                problems << QString("unchanged index %1 listed").arg(map->changed[i].first);
+            if (i > 0 && map->changed[i - 1].first >= map->changed[i].first)
+                problems << QString("changed indices not sorted at %1").arg(map->changed[i].first);
+        }
     if (before.nodeCount() - after.nodeCount() != r.removedNodes)
         problems << QString("%1 nodes removed, %2 reported")
                         .arg(before.nodeCount() - after.nodeCount())
                         .arg(r.removedNodes);
     std::vector<int> hits(after.nodeCount(), 0);
     for (int n = 0; n < before.nodeCount(); ++n) {
-        const int to = r.newNode[n];
+        const int to = nodes(n);
         if (to < 0 || to >= after.nodeCount()) {
             problems << QString("node %1 maps to %2").arg(n).arg(to);
             continue;
@@ -171,7 +179,7 @@ QString renumberingViolations(const TetMesh& before, const TetMesh& after, const
             problems << QString("final node %1 stands for no old node").arg(n);
     std::vector<int> tetHits(after.tetCount(), 0);
     for (int t = 0; t < before.tetCount(); ++t) {
-        const int to = r.newTet[t];
+        const int to = tets(t);
         if (to < 0)
             continue;
         if (to >= after.tetCount()) {
@@ -182,16 +190,23 @@ QString renumberingViolations(const TetMesh& before, const TetMesh& after, const
             problems << QString("two old tets map to tet %1").arg(to);
         Tet mapped = before.tet(t);
         for (int& v : mapped)
-            v = r.newNode[v];
+            v = nodes(v);
         if (sortedTet(mapped) != sortedTet(after.tet(to)))
             problems << QString("old tet %1 maps to tet %2 with other nodes").arg(t).arg(to);
     }
+    // The tets no old tet maps to are exactly the created ones.
+    std::vector<int> created;
+    for (int t = 0; t < after.tetCount(); ++t)
+        if (tetHits[t] == 0)
+            created.push_back(t);
+    if (created != r.createdTets)
+        problems << QString("%1 tets stand for no old tet, %2 reported created").arg(created.size()).arg(r.createdTets.size());
     return problems.join("; ");
 }
 
 /// Final index of old node n.
 int finalIndex(const ImproveResult& r, int n) {
-    return r.renumbered() ? r.newNode[n] : n;
+    return r.renumbering.nodes(n);
 }
 
 double shortestEdge(const TetMesh& m) {
@@ -412,7 +427,7 @@ private slots:
 
         QVERIFY2(r.collapses >= 1, qPrintable(QString::number(r.collapses)));
         QVERIFY(r.renumbered());
-        QCOMPARE(r.newNode[b], r.newNode[a]); // the edge is gone: its ends are one node
+        QCOMPARE(r.renumbering.nodes(b), r.renumbering.nodes(a)); // the edge is gone: its ends are one node
         QCOMPARE(r.removedNodes, r.collapses);
         QCOMPARE(m.nodeCount(), before.nodeCount() - r.removedNodes);
         QVERIFY2(shortestEdge(m) >= o.shortEdge, qPrintable(QString::number(shortestEdge(m) / h)));
@@ -430,7 +445,7 @@ private slots:
             QVERIFY2(relative(m.masses()[n], scratch.masses()[n]) <= 1e-12,
                      qPrintable(QString::number(n)));
         // The merged node is reported as moved and touched.
-        const int merged = r.newNode[a];
+        const int merged = r.renumbering.nodes(a);
         QVERIFY(std::binary_search(r.movedNodes.begin(), r.movedNodes.end(), merged));
         QVERIFY(std::binary_search(r.touchedNodes.begin(), r.touchedNodes.end(), merged));
     }
@@ -458,14 +473,14 @@ private slots:
 
         QVERIFY2(r.collapses >= 1, qPrintable(QString::number(r.collapses)));
         QVERIFY(r.renumbered());
-        QCOMPARE(r.newNode[b], r.newNode[a]);
-        const Vec3 merged = m.ref(r.newNode[a]);
+        QCOMPARE(r.renumbering.nodes(b), r.renumbering.nodes(a));
+        const Vec3 merged = m.ref(r.renumbering.nodes(a));
         QVERIFY2(std::abs(merged.z()) < 1e-12 * scale,
                  qPrintable(QString::number(merged.z() / scale)));
         // Every node on a face of the cube is still on it; none left the cube.
         for (int n = 0; n < before.nodeCount(); ++n)
             for (int axis = 0; axis < 3; ++axis) {
-                const double was = before.ref(n)[axis], is = m.ref(r.newNode[n])[axis];
+                const double was = before.ref(n)[axis], is = m.ref(r.renumbering.nodes(n))[axis];
                 if (was == 0 || was == scale)
                     QVERIFY2(std::abs(is - was) < 1e-12 * scale,
                              qPrintable(QString("node %1 axis %2").arg(n).arg(axis)));
@@ -531,7 +546,7 @@ private slots:
         const ImproveResult r = improveMesh(m, improveRegion(m, {b}, {}, 2), o);
 
         QVERIFY2(r.collapses >= 1, qPrintable(QString::number(r.collapses)));
-        QCOMPARE(r.newNode[b], r.newNode[a]);
+        QCOMPARE(r.renumbering.nodes(b), r.renumbering.nodes(a));
         QVERIFY2(relative(m.totalReferenceVolume(), volume) <= 1e-9,
                  qPrintable(QString::number(relative(m.totalReferenceVolume(), volume))));
         QVERIFY2(relative(sumOfMasses(m), mass) <= 1e-9,
@@ -541,7 +556,7 @@ private slots:
                  qPrintable(renumberingViolations(before, m, r)));
         // The merged node is within maxDeviation local edges of the old boundary around a and
         // b, and a and b were within that of the new boundary around the merged node.
-        const int merged = r.newNode[a];
+        const int merged = r.renumbering.nodes(a);
         const double tolerance = o.maxDeviation * meanBoundaryEdge(before, a, b);
         const double off = distanceTo(m.ref(merged), boundaryTrianglesAt(before, {a, b}));
         const auto newBoundary = boundaryTrianglesAt(m, {merged});
@@ -784,8 +799,8 @@ private slots:
         o.density = kDensity;
         const ImproveResult r = improveMesh(m, improveRegion(m, {b, f}, {}, 2), o);
         QVERIFY2(r.collapses >= 2, qPrintable(QString::number(r.collapses)));
-        QCOMPARE(r.newNode[a], r.newNode[b]);
-        QCOMPARE(r.newNode[e], r.newNode[f]);
+        QCOMPARE(r.renumbering.nodes(a), r.renumbering.nodes(b));
+        QCOMPARE(r.renumbering.nodes(e), r.renumbering.nodes(f));
         for (int n = 0; n < m.nodeCount(); ++n) {
             const double dp = (m.pos(n) - (A * m.ref(n) + c)).norm();
             const double dv = (m.velocities()[n] - (B * m.ref(n) + w)).norm();
@@ -954,7 +969,7 @@ private slots:
         if (const auto problems = checkValidity(m); !problems.empty())
             QFAIL(problems.front().message.c_str());
         for (int n : c.fixedNodes) {
-            const int now = r.newNode.empty() ? n : r.newNode[n];
+            const int now = r.renumbering.nodes(n);
             QVERIFY(now >= 0);
             QCOMPARE(m.ref(now), before[n]);
         }

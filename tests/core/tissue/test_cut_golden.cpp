@@ -2,8 +2,8 @@
 // Tissue::cut (scoops and mouse-like strokes; hybrid at the defaults with the improvement step,
 // the bare hybrid pipeline, subdivision; with and without anchors and resection; with the
 // embedded surface) give, after every cut, exactly the tet mesh that the unoptimised code gave:
-// the same tets in the same order and the same node positions, reference positions and masses
-// to the bit. The fingerprints below were recorded with the code before issue 20's
+// the same tets in the same order, the same node positions, reference positions and masses
+// to the bit, and the same anchored nodes, schemes and cut marks. The fingerprints below were recorded with the code before issue 20's
 // optimisations (166185c); the embedded surface's are its triangle count, the order of its
 // triangles' corners, and a weighted sum of its positions compared to 1e-9 of its size (its
 // update may round differently once vectorised).
@@ -36,6 +36,7 @@ struct Fingerprint {
     int triangles = 0;           ///< the embedded surface's
     std::uint64_t surfaceTopology = 0;
     double surfaceSum = 0;       ///< sum over vertices of (i % 7 + 1) (x + 2 y + 3 z)
+    std::uint64_t marks = 0;     ///< anchored nodes, schemes, cut marks of tets and nodes
 };
 
 /// FNV-1a over raw bytes.
@@ -70,6 +71,12 @@ Fingerprint fingerprintOf(const Tissue& tissue) {
     for (const auto& t : s.triangles)
         st.add(t.data(), sizeof(t));
     f.surfaceTopology = st.h;
+    Hash marks;
+    marks.add(tissue.anchors().nodes().data(), tissue.anchors().nodes().size() * sizeof(int));
+    marks.add(tissue.schemes().data(), tissue.schemes().size() * sizeof(Scheme));
+    marks.add(tissue.tetCuts().data(), tissue.tetCuts().size() * sizeof(int));
+    marks.add(tissue.onCutSurface().data(), tissue.onCutSurface().size());
+    f.marks = marks.h;
     for (std::size_t i = 0; i < s.positions.size(); ++i) {
         const Vec3& p = s.positions[i];
         f.surfaceSum += static_cast<double>(i % 7 + 1) * (p.x() + 2 * p.y() + 3 * p.z());
@@ -194,9 +201,9 @@ private slots:
         if (std::getenv("RESECT_PRINT_GOLDEN")) {
             for (const Fingerprint& f : got)
                 std::printf("    {\"%s\", {%d, %d, 0x%016" PRIx64 "ull, 0x%016" PRIx64 "ull, %d, 0x%016" PRIx64
-                            "ull, %.17g}},\n",
+                            "ull, %.17g, 0x%016" PRIx64 "ull}},\n",
                             c.name, f.tets, f.nodes, f.topology, f.geometry, f.triangles, f.surfaceTopology,
-                            f.surfaceSum);
+                            f.surfaceSum, f.marks);
             QSKIP("printed the fingerprints");
         }
         std::vector<Fingerprint> want;
@@ -216,6 +223,7 @@ private slots:
             QVERIFY2(g.geometry == w.geometry, qPrintable(at + ": positions, reference positions or masses differ"));
             QVERIFY2(g.triangles == w.triangles && g.surfaceTopology == w.surfaceTopology,
                      qPrintable(at + QString(": surface of %1 triangles; recorded %2 (or their corners differ)").arg(g.triangles).arg(w.triangles)));
+            QVERIFY2(g.marks == w.marks, qPrintable(at + ": anchors, schemes or cut marks differ"));
             QVERIFY2(std::abs(g.surfaceSum - w.surfaceSum) <= 1e-9 * std::max(size, 1e-300),
                      qPrintable(at + QString(": surface positions: %1, recorded %2").arg(g.surfaceSum, 0, 'g', 17).arg(w.surfaceSum, 0, 'g', 17)));
         }
