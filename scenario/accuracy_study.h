@@ -116,7 +116,8 @@ struct ScalingRow {
     int addedTets = 0;
     double cutMs = 0;             ///< median of repeats
     double cutMsMin = 0;
-    double usPerTouchedTet = 0;   ///< 1000 * cutMs / touchedTets
+    double usPerTouchedTet = 0;   ///< 1000 * cutMs / touchedTets (Tissue::cut at the defaults)
+    double usPerTouchedTetHybrid = 0;  ///< the same without the improvement step (median)
     /// One explicit step (symplectic Euler, deformation effect), ns per tet, on 1 and 2
     /// threads: median and fastest step.
     double stepNsPerTet1 = 0, stepNsPerTet2 = 0;
@@ -130,6 +131,13 @@ struct ScalingRow {
 /// then stops at the next row or repeat and returns an error "cancelled" (rows done so far
 /// are kept in `rows`).
 using StudyProgress = std::function<bool(double fraction, const std::string& stage)>;
+
+/// The scaling study's meshes and cut: n^3 unit cubes of six tets (the n closest to `tets`), and
+/// the same local cut on every box, a 4 x 4 cell patch in the middle (smaller boxes: what fits)
+/// at the same place relative to the cells (the middle cell rounded down: with n odd, the exact
+/// middle would put the cut half a cell off, and it would be another cut).
+int scalingBoxCells(int tets);
+SweepSurface scalingSweep(int cells);
 
 Status runAccuracyStudy(const StudyConfig& config, std::vector<StudyRow>& rows,
                         const StudyProgress& progress = {});

@@ -8,6 +8,7 @@
 #include "core/mesher/samples.h"
 #include "core/mesher/tetrahedralize.h"
 #include "core/tissue/tissue.h"
+#include "scenario/accuracy_study.h"
 #include "scenario/atomic_file.h"
 
 #include <algorithm>
@@ -38,20 +39,20 @@ int runCutScaling(Args& args) {
     const auto out = args.option("--out");
     args.finish();
 
-    std::string csv = "mesh_tets,touched_tets,added_tets,cut_ms_median,cut_ms_min,us_per_touched_tet\n";
-    std::printf("%10s %12s %10s %14s %12s %18s\n", "mesh_tets", "touched_tets", "added", "cut_ms_median",
-                "cut_ms_min", "us_per_touched_tet");
+    std::string csv = "mesh_tets,touched_tets,added_tets,cut_ms_median,cut_ms_min,us_per_touched_tet,"
+                      "improve_ms_median,us_per_touched_tet_without_improvement\n";
+    std::printf("%10s %12s %10s %14s %12s %18s %18s %18s\n", "mesh_tets", "touched_tets", "added", "cut_ms_median",
+                "cut_ms_min", "us_per_touched_tet", "improve_ms_median", "us_without_improve");
+    const auto medianOf = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+    };
     for (int target : sizes) {
-        // n^3 unit cubes of 6 tets each; the sweep is a 4 x 4 cube patch in the middle, so
-        // every mesh sees the same local cut.
-        const int n = std::max(1, static_cast<int>(std::lround(std::cbrt(target / 6.0))));
+        // n^3 unit cubes of 6 tets each; every mesh sees the same local cut (accuracy_study.h).
+        const int n = scalingBoxCells(target);
         const TetMesh base = makeBoxTetMesh(Vec3::Zero(), Vec3::Constant(n), n, n, n);
-        const double c = 0.5 * n;
-        const std::vector<Vec3> start{Vec3(c - 2, c - 2, c + 0.37), Vec3(c + 2, c - 2, c + 0.41)};
-        const std::vector<Vec3> end{Vec3(c - 2, c + 2, c + 0.45), Vec3(c + 2, c + 2, c + 0.49)};
-        SweepSurface sweep;
-        requireOk(SweepSurface::fromStartEnd(start, end, sweep));
-        std::vector<double> times;
+        const SweepSurface sweep = scalingSweep(n);
+        std::vector<double> times, improve, without;
         int touched = 0, added = 0;
         Tissue loaded;  // grid and mean edge: once per loaded mesh, not per cut
         requireOk(Tissue::create(base, {}, Material{}, {}, loaded));
@@ -61,17 +62,21 @@ int runCutScaling(Args& args) {
             if (Status s = tissue.cut(sweep, CutOptions{}, &result); !s.ok())
                 throw CliError{kInternal, s.message()};
             times.push_back(result.totalMs);
+            improve.push_back(result.improveMs);
+            without.push_back(result.totalMs - result.improveMs);
             touched = result.tets.touchedTets;
             added = result.tets.addedTets;
         }
-        std::sort(times.begin(), times.end());
-        const double median = times[times.size() / 2];
+        const double median = medianOf(times);
+        const double perTet = 1000.0 * median / std::max(1, touched);
+        const double perTetWithout = 1000.0 * medianOf(without) / std::max(1, touched);
         char line[256];
-        std::snprintf(line, sizeof line, "%d,%d,%d,%.4f,%.4f,%.3f\n", base.tetCount(), touched, added, median,
-                      times.front(), 1000.0 * median / std::max(1, touched));
+        std::snprintf(line, sizeof line, "%d,%d,%d,%.4f,%.4f,%.3f,%.4f,%.3f\n", base.tetCount(), touched, added,
+                      median, *std::min_element(times.begin(), times.end()), perTet, medianOf(improve),
+                      perTetWithout);
         csv += line;
-        std::printf("%10d %12d %10d %14.4f %12.4f %18.3f\n", base.tetCount(), touched, added, median, times.front(),
-                    1000.0 * median / std::max(1, touched));
+        std::printf("%10d %12d %10d %14.4f %12.4f %18.3f %18.4f %18.3f\n", base.tetCount(), touched, added, median,
+                    *std::min_element(times.begin(), times.end()), perTet, medianOf(improve), perTetWithout);
         std::fflush(stdout);
     }
     if (out)
