@@ -60,8 +60,9 @@ commands:
                                     the plots cannot be drawn (the CSVs are still written)
   bench cut-scaling [--sizes 10000,100000,1000000] [--repeats 7] [--out scaling.csv]
                                     the same local cut on meshes of growing size
-  bench sim [--sizes 10000,100000,1000000] [--threads 1,2] [--steps N]
-                                    cost of one explicit simulation step per tet
+  bench sim [--sizes 10000,100000,1000000] [--threads 1,2] [--steps N] [--shuffle]
+                                    cost of one explicit simulation step per tet (--shuffle:
+                                    also numbered at random, and reordered along a curve)
   bench surface [--details 1,5]     embedded surface: bind, apply, re-bind, cut (myoma
                                     surface at 40k x detail triangles)
   bench resection --out DIR [--sample polyp,myoma|none] [--surface PATH ...] [--passes 20]

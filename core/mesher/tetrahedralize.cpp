@@ -8,6 +8,8 @@
 
 #include "core/mesher/tetrahedralize.h"
 
+#include "core/mesh/reorder.h"
+
 #include "core/cut/improve_mesh.h"
 #include "core/mesh/quality.h"
 #include "core/mesher/check_surface.h"
@@ -421,6 +423,10 @@ Status tetrahedralize(const TriangleSurface& surface, const MeshingOptions& opti
                     }
                 }
             }
+            // Numbered along a space-filling curve (reorder.h), before volume matching moves
+            // the boundary nodes: with and without matching the mesh is numbered alike.
+            if (options.reorder)
+                reorderForLocality(result);
             MeshingReport r = rep;
             r.seed = seed;
             r.attempts = attempt + 1;

@@ -57,6 +57,10 @@ struct MeshingOptions {
     /// Checked after volume matching (which usually leaves none); without matching it is
     /// about 3-8 % at the default edge length (the boundary is inscribed in the surface).
     double maxVolumeError = 0.2;
+    /// Number the nodes and tets along a space-filling curve (core/mesh/reorder.h): the
+    /// refinement's order is close to random in space, and an explicit step on it is several
+    /// times slower.
+    bool reorder = true;
     /// Optional: set to true from another thread to cancel; the result is then an error.
     const std::atomic<bool>* cancel = nullptr;
     /// Optional: called (on the meshing thread) as each stage starts.

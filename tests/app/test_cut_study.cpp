@@ -46,7 +46,11 @@ private slots:
         QVERIFY2(enhanced.quality.minRadiusRatio >= 0.3 * original.quality.minRadiusRatio,
                  qPrintable(QString("min radius ratio %1 vs input %2")
                                 .arg(enhanced.quality.minRadiusRatio).arg(original.quality.minRadiusRatio)));
-        QVERIFY(subdivision.quality.minRadiusRatio < 0.1 * original.quality.minRadiusRatio);
+        // Subdivision's worst element depends on the node numbering (its face diagonals follow
+        // the node indices): 0.04 times the input's on the polyp as CGAL numbered it, 0.125
+        // times along the mesher's space-filling curve (reorder.h); far worse either way, and
+        // its stable step more than ten times shorter (below).
+        QVERIFY(subdivision.quality.minRadiusRatio < 0.2 * original.quality.minRadiusRatio);
         QVERIFY(enhanced.stableDt > 10 * subdivision.stableDt);
         // Snapping and relaxation: relaxation never lowers the worst element of the snapped cut.
         const StudyColumn& snapped = study.columns[4];

@@ -135,7 +135,9 @@ std::vector<Fingerprint> runCase(const Case& c) {
         TriangleSurface anatomy = sampleSurface(sample, 0.25);
         for (Vec3& p : anatomy.positions)
             p *= c.scale;
-        if (!tetrahedralize(anatomy, MeshingOptions{}, mesh).ok())
+        MeshingOptions meshing;
+        meshing.reorder = false;  // the meshes as recorded (the reordering came later)
+        if (!tetrahedralize(anatomy, meshing, mesh).ok())
             qFatal("meshing %s failed", c.body);
         surface = sampleSurface(sample, 0.05);
         for (Vec3& p : surface.positions)
