@@ -3,7 +3,7 @@
 // positions of its nodes and scatters forces back to them: when neighbouring tets have nodes
 // that are near in memory, those reads hit the cache. The mesher's output is ordered by
 // insertion during Delaunay refinement, close to random in space: on a 1M-tet box numbered at
-// random, a step costs 7 times what it costs in the box's own order (resect bench sim --shuffle).
+// random, a step costs 2-3 times what it costs in the box's own order (resect bench sim --shuffle).
 //
 // reorderForLocality() numbers the nodes along a Z-order (Morton) curve through the reference
 // positions and the tets by their centroids along the same curve. The mesh stays the same mesh
