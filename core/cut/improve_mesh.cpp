@@ -234,6 +234,7 @@ private:
     std::unordered_map<int, int> mergedInto;     ///< collapsed node -> node it merged into
     std::unordered_set<int> moved, touched;
     SlotOrigins tetOrigin, nodeOrigin;           ///< what each changed slot held at the start
+    mutable std::unordered_map<int, double> ratioOf;  ///< tetRatio() of tets not changed since
 
     bool alive(int n) const { return !mergedInto.count(n); }
 
@@ -248,17 +249,22 @@ private:
         double worst = 1;
         for (int n : nodes)
             if (alive(n))
-                for (int t : m.nodeTets(n)) {
-                    const Tet& q = m.tet(t);
-                    worst = std::min(worst, radiusRatio(m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3])));
-                }
+                for (int t : m.nodeTets(n))
+                    worst = std::min(worst, tetRatio(t));
         return worst;
     }
 
+    /// Radius ratio of tet t as it is (reference positions). Each tet is measured once until
+    /// it changes (forget()): the sweeps look at the same tets again and again.
     double tetRatio(int t) const {
+        if (const auto it = ratioOf.find(t); it != ratioOf.end())
+            return it->second;
         const Tet& q = m.tet(t);
-        return radiusRatio(m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3]));
+        const double ratio = radiusRatio(m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3]));
+        ratioOf.emplace(t, ratio);
+        return ratio;
     }
+    void forget(int t) { ratioOf.erase(t); }
 
     /// Faces of the given tets that contain node x and occur once among them (the boundary of
     /// x's star when `tets` are all of x's tets), oriented outward.
@@ -348,6 +354,8 @@ private:
     }
 
     void moveNode(int v, const Vec3& ref, const Vec3& pos, const Vec3& vel) {
+        for (int t : m.nodeTets(v))
+            forget(t);
         m.setNodePosition(v, ref, pos);
         m.velocities()[v] = vel;  // velocities are not recorded by backups: none is open here
         moved.insert(v);
@@ -492,7 +500,7 @@ private:
         for (int t : tetsA)
             if (std::find(tetsB.begin(), tetsB.end(), t) != tetsB.end())
                 shell.push_back(t);
-        if (shell.empty() || !linkCondition(a, b))
+        if (shell.empty())
             return false;
         // The union of both stars before, and the tets that remain, with b -> a.
         std::vector<Tet> before, after;
@@ -619,7 +627,8 @@ private:
         const bool critical = isShort && (pa - pb).norm() < o.floorEdge && best.worst >= o.floorRatio;
         const bool accept = isShort || coarsen ? best.worst >= std::min(o.badRatio, worstBefore) || critical
                                                : best.worst > worstBefore;
-        if (!accept)
+        // The link condition last: it holds for most edges, and most placements are refused.
+        if (!accept || !linkCondition(a, b))
             return false;
         applyCollapse(a, b, shell, tetsB, best);
         return true;
@@ -627,6 +636,8 @@ private:
 
     void removeTet(int t) {
         tetOrigin.remove(t, m.tetCount());
+        forget(t);
+        forget(m.tetCount() - 1);  // the last tet takes slot t
         m.removeTet(t);
         ++r.removedTets;
     }
@@ -638,6 +649,7 @@ private:
                 for (int& v : q)
                     if (v == b)
                         v = a;
+                forget(t);
                 m.replaceTet(t, q);
             }
         // Highest first: the last tet, which takes a freed slot, is then never in the shell.
@@ -739,11 +751,13 @@ private:
         std::sort(slots.rbegin(), slots.rend());  // highest first (removal moves the last tet)
         const std::size_t common = std::min(slots.size(), created.size());
         for (std::size_t i = 0; i < common; ++i) {
+            forget(slots[i]);
             m.replaceTet(slots[i], created[i]);
             tetOrigin.set(slots[i], -1);
         }
         for (std::size_t i = common; i < created.size(); ++i) {
             tetOrigin.set(m.tetCount(), -1);
+            forget(m.tetCount());
             m.addTet(created[i]);
         }
         for (std::size_t i = common; i < slots.size(); ++i)
@@ -975,10 +989,12 @@ private:
                     neighbours.push_back(u);
         std::sort(neighbours.begin(), neighbours.end());
         neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
-        const auto score = [&](const Vec3& p, Vec3* ascent) {
+        // (`known`: the star's worst ratio at p if known, else negative.)
+        const auto score = [&](const Vec3& p, Vec3* ascent, double known = -1) {
             int wi = 0;
             // (Both terms are capped at 2: above 1 neither limits the node.)
-            const double ratio = o.badRatio > 0 ? std::min(2.0, worstAround(star, v, p, &wi) / o.badRatio) : 2.0;
+            const double worstHere = known >= 0 ? known : worstAround(star, v, p, &wi);
+            const double ratio = o.badRatio > 0 ? std::min(2.0, worstHere / o.badRatio) : 2.0;
             double edge = 2.0;
             int nearest = -1;
             if (o.shortEdge > 0)
@@ -1002,7 +1018,10 @@ private:
             }
             return std::min({ratio, edge, 1.0});
         };
-        double worst = score(x0, nullptr);
+        double worstNow = 2;  // the star as it is: the tets' own (remembered) ratios
+        for (int t : m.nodeTets(v))
+            worstNow = std::min(worstNow, tetRatio(t));
+        double worst = score(x0, nullptr, worstNow);
         if (worst >= 1)
             return false;
         const std::vector<Face> faces = boundaryFacesAt(star, v);
