@@ -115,9 +115,21 @@ private:
     /// without being a corner of t. Decided from the construction (which parent faces, or
     /// the cut polygon, a vertex lies on), not from rounded coordinates, where a constructed
     /// point is only nearly coplanar and would give an almost flat tet.
-    bool onPlaneOf(int node, const SideTri& t) const {
-        auto it = m_planes.find(node);
-        return it != m_planes.end() && (it->second >> t.plane & 1);
+    bool onPlaneOf(int node, const SideTri& t) const { return planesOf(node) >> t.plane & 1; }
+    /// Planes a vertex of the current tet lies on (0 for a vertex not listed).
+    std::uint8_t planesOf(int node) const {
+        for (const auto& [v, mask] : m_planes)
+            if (v == node)
+                return mask;
+        return 0;
+    }
+    void setPlanes(int node, std::uint8_t mask) {
+        for (auto& [v, m] : m_planes)
+            if (v == node) {
+                m = mask;
+                return;
+            }
+        m_planes.push_back({node, mask});
     }
     int sideOfVertex(const TetCut& tc, int node) const;
 
@@ -127,8 +139,17 @@ private:
     CutChanges& m_changes;
     std::unordered_map<Tri, int, FaceHash> m_faceNodes;
     std::unordered_map<Tri, int, FaceHash> m_faceDiagonal;  ///< face -> a node on its chosen diagonal
-    std::unordered_map<int, std::uint8_t> m_planes;  ///< planes each vertex of the current tet lies on
+    /// Planes each vertex of the current tet lies on: its four nodes, split points and face
+    /// nodes, a dozen at most, so a list.
+    std::vector<std::pair<int, std::uint8_t>> m_planes;
     std::vector<int> m_scratch;
+    // Buffers reused from tet to tet (a cut decomposes a hundred tets or more).
+    std::vector<SideTri> m_faceTris, m_sideTris;
+    std::vector<Tri> m_cutTris;
+    std::vector<Tet> m_tets;
+    std::vector<std::pair<Tet, int>> m_result;
+    std::vector<int> m_coneVerts, m_coneTris;
+    std::vector<std::pair<int, int>> m_candidates;
 };
 
 /// Shape quality of a triangle: 4 sqrt(3) area / (sum of squared edges), 1 if equilateral.
@@ -202,19 +223,19 @@ Status Decomposer::triangulateFace(const TetCut& tc, const std::array<int, 6>& e
     const Tet& q = m_mesh.tet(tc.tet);
     const auto& lf = kTetFaces[f];
     // The face's boundary cycle in outward order, with split points inserted.
-    std::vector<int> cycle;
-    std::vector<char> original;
+    std::array<int, 6> cycle;
+    std::array<char, 6> original;
+    int n = 0;
     for (int s = 0; s < 3; ++s) {
         const int x = lf[s], y = lf[(s + 1) % 3];
-        cycle.push_back(q[x]);
-        original.push_back(1);
+        cycle[n] = q[x];
+        original[n++] = 1;
         const int p = ep[localEdge(x, y)];
         if (p >= 0) {
-            cycle.push_back(p);
-            original.push_back(0);
+            cycle[n] = p;
+            original[n++] = 0;
         }
     }
-    const int n = static_cast<int>(cycle.size());
     const auto at = [&](int i) { return cycle[((i % n) + n) % n]; };
     const auto isOriginal = [&](int i) { return original[((i % n) + n) % n] != 0; };
     // Side of a triangle in a completely cut tet: that of its first non-cut original node.
@@ -255,7 +276,7 @@ Status Decomposer::triangulateFace(const TetCut& tc, const std::array<int, 6>& e
         // standard rule.
         const int fn = m_options.symmetricFaces ? faceNode({q[lf[0]], q[lf[1]], q[lf[2]]}, quad) : -1;
         if (fn >= 0) {
-            m_planes[fn] = static_cast<std::uint8_t>(1 << f);
+            setPlanes(fn, static_cast<std::uint8_t>(1 << f));
             for (int k = 0; k < 4; ++k)
                 emit({quad[k], quad[(k + 1) % 4], fn}, quadSide);
         } else {
@@ -359,11 +380,14 @@ Status Decomposer::cutPolygon(const TetCut& tc, const std::array<int, 6>& ep, st
 }
 
 Status Decomposer::cone(const std::vector<SideTri>& tris, std::vector<Tet>& tets, bool avoidCrossing) {
-    std::vector<int> verts;
+    // The polyhedron's vertices, sorted (a dozen at most: deduplicated as they come).
+    std::vector<int>& verts = m_coneVerts;
+    verts.clear();
     for (const SideTri& t : tris)
-        verts.insert(verts.end(), t.v.begin(), t.v.end());
+        for (int x : t.v)
+            if (std::find(verts.begin(), verts.end(), x) == verts.end())
+                verts.push_back(x);
     std::sort(verts.begin(), verts.end());
-    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
 
     const auto behind = [&](const Tri& t, const Vec3& cr, const Vec3& cp) {
         return orient3d(m_mesh.ref(t[0]), m_mesh.ref(t[1]), m_mesh.ref(t[2]), cr) < 0 &&
@@ -372,7 +396,8 @@ Status Decomposer::cone(const std::vector<SideTri>& tris, std::vector<Tet>& tets
     const auto contains = [](const Tri& t, int v) { return t[0] == v || t[1] == v || t[2] == v; };
 
     // Candidates ordered by how many tets their cone makes.
-    std::vector<std::pair<int, int>> candidates;  // (count, vertex)
+    std::vector<std::pair<int, int>>& candidates = m_candidates; // (count, vertex)
+    candidates.clear();
     for (int v : verts) {
         int count = 0;
         for (const SideTri& t : tris)
@@ -385,19 +410,42 @@ Status Decomposer::cone(const std::vector<SideTri>& tris, std::vector<Tet>& tets
     for (const auto& [count, v] : candidates) {
         if (m_options.apexByQuality ? false : count > bestCount)
             break;
+        // Every tet of the cone positive in both configurations (exact, and cheap)...
         bool valid = true;
-        double quality = std::numeric_limits<double>::infinity();
-        for (const SideTri& st : tris) {
-            const Tri& t = st.v;
-            if (contains(t, v))
+        const std::uint8_t planes = planesOf(v);
+        std::vector<int>& coneTris = m_coneTris; // positions in tris of the cone's bases
+        coneTris.clear();
+        for (int k = 0; k < static_cast<int>(tris.size()) && valid; ++k) {
+            const SideTri& st = tris[k];
+            if (contains(st.v, v))
                 continue;
-            if (onPlaneOf(v, st) || !behind(t, m_mesh.ref(v), m_mesh.pos(v))) {
-                valid = false;
-                break;
-            }
-            quality = std::min(quality, radiusRatio(m_mesh.ref(t[0]), m_mesh.ref(t[2]), m_mesh.ref(t[1]), m_mesh.ref(v)));
+            valid = !(planes >> st.plane & 1) && behind(st.v, m_mesh.ref(v), m_mesh.pos(v));
+            coneTris.push_back(k);
         }
-        if (valid && avoidCrossing && m_options.sweep) {
+        if (!valid)
+            continue;
+        // ... then their worst radius ratio, two tets at a time. The worst only gets worse: once
+        // no better than the best apex so far, this vertex cannot replace it.
+        const auto tetCorners = [&](int k) {
+            const Tri& t = tris[k].v;
+            return std::array<Vec3, 4>{m_mesh.ref(t[0]), m_mesh.ref(t[2]), m_mesh.ref(t[1]),
+                                       m_mesh.ref(v)};
+        };
+        double quality = std::numeric_limits<double>::infinity();
+        std::size_t i = 0;
+        for (; i + 1 < coneTris.size() && quality > bestQuality; i += 2) {
+            const auto [first, second] =
+                radiusRatioPair(tetCorners(coneTris[i]), tetCorners(coneTris[i + 1]));
+            quality = std::min(quality, first);
+            quality = std::min(quality, second);
+        }
+        if (i < coneTris.size() && quality > bestQuality) {
+            const auto c = tetCorners(coneTris[i]);
+            quality = std::min(quality, radiusRatio(c[0], c[1], c[2], c[3]));
+        }
+        if (!(quality > bestQuality))
+            continue;
+        if (avoidCrossing && m_options.sweep) {
             SegmentQuery query;
             for (int u : verts) {
                 if (u == v)
@@ -506,18 +554,21 @@ Status Decomposer::decompose(const TetCut& tc) {
         std::uint8_t mask = static_cast<std::uint8_t>(0xF & ~(1 << i));
         if (tc.nodeCode >> i & 1)
             mask |= 1 << kCutPlane;
-        m_planes[parent[i]] = mask;
+        setPlanes(parent[i], mask);
     }
     for (int e = 0; e < 6; ++e)
         if (ep[e] >= 0)
-            m_planes[ep[e]] = static_cast<std::uint8_t>((0xF & ~(1 << kTetEdges[e][0]) & ~(1 << kTetEdges[e][1])) |
-                                                        (tc.partial ? 0 : 1 << kCutPlane));
-    std::vector<SideTri> faceTris;
+            setPlanes(ep[e], static_cast<std::uint8_t>(
+                                 (0xF & ~(1 << kTetEdges[e][0]) & ~(1 << kTetEdges[e][1])) |
+                                 (tc.partial ? 0 : 1 << kCutPlane)));
+    std::vector<SideTri>& faceTris = m_faceTris;
+    faceTris.clear();
     for (int f = 0; f < 4; ++f)
         if (Status s = triangulateFace(tc, ep, f, faceTris); !s.ok())
             return s;
 
-    std::vector<std::pair<Tet, int>> result;  // sub-tet and its side
+    std::vector<std::pair<Tet, int>>& result = m_result; // sub-tet and its side
+    result.clear();
     if (tc.partial) {
         const std::vector<SideTri>& tris = faceTris;
         // The sweep ends inside this tet and the crack stays closed here. The cone apex is
@@ -526,7 +577,8 @@ Status Decomposer::decompose(const TetCut& tc) {
         for (int e = 0; e < 6; ++e)
             if (ep[e] >= 0)
                 points.push_back(ep[e]);
-        std::vector<Tet> tets;
+        std::vector<Tet>& tets = m_tets;
+        tets.clear();
         bool done = false;
         if (points.size() == 1)
             done = coneFrom(tris, m_mesh.ref(points[0]), m_mesh.pos(points[0]), points[0], tets);
@@ -563,7 +615,8 @@ Status Decomposer::decompose(const TetCut& tc) {
         for (const Tet& t : tets)
             result.push_back({t, 0});
     } else {
-        std::vector<Tri> cut;
+        std::vector<Tri>& cut = m_cutTris;
+        cut.clear();
         if (Status s = cutPolygon(tc, ep, cut); !s.ok())
             return s;
         for (int side : {1, -1}) {
@@ -573,7 +626,8 @@ Status Decomposer::decompose(const TetCut& tc) {
                     representative = parent[i];
             if (representative < 0)
                 return Status::error("tet " + std::to_string(tc.tet) + ": a side without nodes");
-            std::vector<SideTri> tris;
+            std::vector<SideTri>& tris = m_sideTris;
+            tris.clear();
             for (const SideTri& t : faceTris) {
                 if (t.side == 0)
                     return Status::error("tet " + std::to_string(tc.tet) + ": a face triangle on no side");
@@ -589,7 +643,8 @@ Status Decomposer::decompose(const TetCut& tc) {
                     std::swap(t[1], t[2]);
                 tris.push_back({t, side, kCutPlane});
             }
-            std::vector<Tet> tets;
+            std::vector<Tet>& tets = m_tets;
+            tets.clear();
             if (Status s = cone(tris, tets); !s.ok())
                 return Status::error("tet " + std::to_string(tc.tet) + ": " + s.message());
             for (const Tet& t : tets)

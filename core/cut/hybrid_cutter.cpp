@@ -7,6 +7,7 @@
 #include "core/cut/separate.h"
 #include "core/cut/snap_nodes.h"
 #include "core/cut/update_rest_state.h"
+#include "core/mesh/index_marks.h"
 #include "core/mesh/quality.h"
 #include "core/mesh/tet_mesh_backup.h"
 #include "core/mesh/topology.h"
@@ -15,7 +16,6 @@
 #include <chrono>
 #include <cmath>
 #include <string>
-#include <unordered_set>
 
 namespace resect {
 namespace {
@@ -136,13 +136,22 @@ void snapStep(TetMesh& mesh, TetGrid& grid, const SweepSurface& sweep, const Cut
     result.stats.snappedNodes = snapped.snapped;
     result.stats.refusedSnaps = snapped.refused;
     result.stats.maxCutNodeDistance = snapped.maxDistanceAfter;
-    // Tets around moved nodes may have grown out of their grid cells.
-    for (int n : result.changes.cutNodes)
+    // Tets around moved nodes may have grown out of their grid cells (each registered once:
+    // a second registration at the same place would change no query). A mark per tet, kept
+    // between cuts on this thread (see "Marks" at HybridCutter::cut).
+    thread_local IndexMarks<char> registered;
+    const auto scope = registered.use(mesh.tetCount());
+    const auto registerTetsAt = [&](int n) {
         for (int t : mesh.nodeTets(n))
-            grid.insert(mesh, t);
+            if (!registered[t]) {
+                registered.set(t, 1);
+                grid.insert(mesh, t);
+            }
+    };
+    for (int n : result.changes.cutNodes)
+        registerTetsAt(n);
     for (const auto& [orig, copy] : result.changes.duplicatedNodes)
-        for (int t : mesh.nodeTets(copy))
-            grid.insert(mesh, t);
+        registerTetsAt(copy);
 }
 
 /// Step 7: relaxation (section 4.6) with the boundary cut nodes and boundary split points
@@ -166,25 +175,44 @@ std::vector<int> relaxStep(TetMesh& mesh, const SweepSurface& sweep, const CutOp
 
 /// The change list's remaining entries: modified tets once, and every node whose incident
 /// tets changed (new, modified or re-attached tets, and the tets around moved nodes, whose
-/// rest volumes changed). Tets around moved nodes are re-registered in the grid.
-void finishChangeList(TetMesh& mesh, TetGrid& grid, const std::vector<int>& moved, CutChanges& changes) {
+/// rest volumes changed). Tets around moved nodes are re-registered in the grid, once each;
+/// `registered` marks them (per tet; clear on entry, covering every tet of the mesh now).
+void finishChangeList(TetMesh& mesh, TetGrid& grid, const std::vector<int>& moved,
+                      CutChanges& changes, IndexMarks<char>& registered) {
     std::sort(changes.modifiedTets.begin(), changes.modifiedTets.end());
     changes.modifiedTets.erase(std::unique(changes.modifiedTets.begin(), changes.modifiedTets.end()),
                                changes.modifiedTets.end());
-    std::unordered_set<int> touched;
+    // Each node once (a mark per node, kept between cuts on this thread: see "Marks" at
+    // HybridCutter::cut), then sorted.
+    thread_local IndexMarks<char> isTouched;
+    const auto scope = isTouched.use(mesh.nodeCount());
+    std::vector<int>& touched = changes.touchedNodes;
+    touched.clear();
+    const auto touch = [&](int n) {
+        if (!isTouched[n]) {
+            isTouched.set(n, 1);
+            touched.push_back(n);
+        }
+    };
+    const auto touchTet = [&](int t) {
+        for (int n : mesh.tet(t))
+            touch(n);
+    };
     for (int t : changes.modifiedTets)
-        touched.insert(mesh.tet(t).begin(), mesh.tet(t).end());
+        touchTet(t);
     for (int t = changes.firstNewTet; t < mesh.tetCount(); ++t)
-        touched.insert(mesh.tet(t).begin(), mesh.tet(t).end());
+        touchTet(t);
     for (const auto& [orig, copy] : changes.duplicatedNodes)
-        touched.insert(orig);
+        touch(orig);
     for (int n : moved)
         for (int t : mesh.nodeTets(n)) {
-            touched.insert(mesh.tet(t).begin(), mesh.tet(t).end());
+            if (registered[t])
+                continue; // its nodes are touched already
+            registered.set(t, 1);
+            touchTet(t);
             grid.insert(mesh, t);
         }
-    changes.touchedNodes.assign(touched.begin(), touched.end());
-    std::sort(changes.touchedNodes.begin(), changes.touchedNodes.end());
+    std::sort(touched.begin(), touched.end());
 }
 
 } // namespace
@@ -353,13 +381,18 @@ Status HybridCutter::cut(const SweepSurface& sweep, const CutOptions& options, C
     // Step 8 (section 4.7): rest state, masses by Eq. 3 for every node whose tets changed.
     if (!stage(CutStage::RestState))
         return cancelledAt(CutStage::RestState);
-    finishChangeList(m_mesh, m_grid, moved, changes);
+    // Tets finishChangeList re-registered in the grid (a mark per tet, see "Marks" at
+    // HybridCutter::cut).
+    thread_local IndexMarks<char> registered;
+    const auto registeredScope = registered.use(m_mesh.tetCount());
+    finishChangeList(m_mesh, m_grid, moved, changes, registered);
     t0 = Clock::now();
     updateMasses(m_mesh, changes.touchedNodes, options.density);
     stats.timeMs.update = msSince(t0);
 
     for (int t = changes.firstNewTet; t < m_mesh.tetCount(); ++t)
-        m_grid.insert(m_mesh, t);
+        if (!registered[t])
+            m_grid.insert(m_mesh, t);
     stats.addedTets = m_mesh.tetCount() - changes.firstNewTet;
     stats.addedNodes = m_mesh.nodeCount() - changes.firstNewNode;
     stats.touchedTets = static_cast<int>(crossed.candidateTets.size() + stats.addedTets);

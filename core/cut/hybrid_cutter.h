@@ -140,6 +140,15 @@ public:
     /// Cuts the mesh along the sweep, the steps of section 4.1 in order. On failure, or when
     /// `proceed` cancels before a stage, the mesh and the grid are left exactly as they were
     /// (TetMeshBackup). Cost: in proportion to the tets near the sweep.
+    /// Marks: the steps mark nodes and tets in per-index arrays (IndexMarks,
+    /// core/mesh/index_marks.h), function-local thread_local in each step. They are scratch of
+    /// a step, not state of a mesh or a cutter, so they are kept from cut to cut on a thread
+    /// whichever cutter cuts (every copy of a Tissue has a new cutter, and the studies and
+    /// benchmarks copy one per cut: a cutter's own marks would cost O(mesh) again), and each use
+    /// clears only what it set. A thread's first cut on a mesh larger than any before grows them
+    /// in O(mesh); they then hold 13 bytes per tet and 15 per node of the largest mesh cut on
+    /// the thread (plus a quarter of headroom) until the thread ends. The steps never nest, and
+    /// cuts on other threads have their own marks.
     Status cut(const SweepSurface& sweep, const CutOptions& options, CutResult& result,
                const CutStageCallback& proceed = {});
 

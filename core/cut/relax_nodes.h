@@ -14,6 +14,9 @@
 // smallest radius ratio around the node does not drop, so relaxation never lowers the
 // mesh's minimum radius ratio. New reference positions come from barycentric coordinates in
 // the tet containing the new position, as in snapping.
+// Cost: a trial move computes the radius ratios of the tets around the node only (the others'
+// are kept from the moves that changed them), and a node whose copies and neighbours have not
+// moved since its last trial is not tried again (the trial would end as that one did).
 
 #include "core/cut/cut_types.h"
 #include "core/sweep/sweep_surface.h"

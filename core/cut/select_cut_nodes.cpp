@@ -1,28 +1,42 @@
 #include "core/cut/select_cut_nodes.h"
 
-#include "core/mesh/union_find.h"
+#include "core/mesh/index_marks.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
-#include <unordered_map>
-#include <unordered_set>
 
 namespace resect {
 namespace {
 
 /// Groups of the nodes in `nodes` (4-bit mask) joined by the tet edges NOT in `cut` (6-bit).
 /// Returns a group id per local node (-1 for nodes outside the mask) and the group count.
-/// Groups are numbered in the order of their lowest local node.
+/// Groups are numbered in the order of their lowest local node. (Called for every touched
+/// tet, in the fixed-point loop too: a flood fill over the four nodes, nothing allocated.)
 int groupNodes(std::uint8_t nodes, std::uint8_t cut, std::array<int, 4>& group) {
-    UnionFind joined(4);
-    for (int e = 0; e < 6; ++e) {
-        const int i = kTetEdges[e][0], j = kTetEdges[e][1];
-        if ((nodes >> i & 1) && (nodes >> j & 1) && !(cut >> e & 1))
-            joined.unite(i, j);
+    group.fill(-1);
+    int count = 0;
+    for (int start = 0; start < 4; ++start) {
+        if (!(nodes >> start & 1) || group[start] >= 0)
+            continue;
+        group[start] = count;
+        for (bool grew = true; grew;) {
+            grew = false;
+            for (int e = 0; e < 6; ++e) {
+                const int i = kTetEdges[e][0], j = kTetEdges[e][1];
+                if (!(nodes >> i & 1) || !(nodes >> j & 1) || (cut >> e & 1))
+                    continue;
+                if (group[i] == count && group[j] < 0) {
+                    group[j] = count;
+                    grew = true;
+                } else if (group[j] == count && group[i] < 0) {
+                    group[i] = count;
+                    grew = true;
+                }
+            }
+        }
+        ++count;
     }
-    std::vector<int> label;
-    const int count = joined.compact(label, [&](int i) { return (nodes >> i & 1) != 0; });
-    std::copy(label.begin(), label.end(), group.begin());
     return count;
 }
 
@@ -65,25 +79,52 @@ int crossedIndex(const IntersectedEdges& crossed, int a, int b) {
     return it == crossed.index.end() ? -1 : it->second;
 }
 
+/// Per-node flags of one selection.
+enum NodeFlag : std::uint8_t {
+    kOnSweep = 1,    ///< lies exactly on the sweep
+    kIneligible = 2, ///< a node of a partially cut tet: never a cut node (markPartialTets)
+    kCut = 4,        ///< chosen as a cut node (chooseCutNodes)
+    kNominated = 8,  ///< nominated by a crossed edge (chooseCutNodes)
+};
+
 /// The tets the sweep touches: on a crossed edge or at a node on the sweep.
 struct TouchedTets {
     std::vector<int> tets;                 ///< sorted, without duplicates
     std::vector<std::uint8_t> crossedMask; ///< per tet: bit e set if local edge e is crossed
     std::vector<char> partial;             ///< per tet: partially cut (markPartialTets)
+    const IndexMarks<int>* position = nullptr; ///< per mesh tet: its position in `tets`, or -1
 
+    /// Position of tet t in `tets`, or -1.
+    int find(int t) const { return (*position)[t]; }
     /// True if tet t is touched and partially cut.
     bool isPartial(int t) const {
-        const auto it = std::lower_bound(tets.begin(), tets.end(), t);
-        return it != tets.end() && *it == t && partial[it - tets.begin()];
+        const int k = find(t);
+        return k >= 0 && partial[k];
+    }
+    /// Crossed edges of tet t (0 if it is not touched).
+    std::uint8_t crossedEdges(int t) const {
+        const int k = find(t);
+        return k >= 0 ? crossedMask[k] : 0;
     }
 };
 
-TouchedTets gatherTouchedTets(const TetMesh& mesh, const IntersectedEdges& crossed) {
+TouchedTets gatherTouchedTets(const TetMesh& mesh, const IntersectedEdges& crossed,
+                              IndexMarks<int>& position) {
     TouchedTets touched;
+    // Each crossed edge's tets, with the edge's local number in each.
+    std::vector<std::pair<int, std::uint8_t>> crossings;
     std::vector<int> scratch;
     for (const EdgeCrossing& e : crossed.edges) {
         mesh.edgeTets(e.a, e.b, scratch);
-        touched.tets.insert(touched.tets.end(), scratch.begin(), scratch.end());
+        for (int t : scratch) {
+            const Tet& q = mesh.tet(t);
+            for (int le = 0; le < 6; ++le) {
+                const int x = q[kTetEdges[le][0]], y = q[kTetEdges[le][1]];
+                if ((x == e.a && y == e.b) || (x == e.b && y == e.a))
+                    crossings.push_back({t, static_cast<std::uint8_t>(le)});
+            }
+            touched.tets.push_back(t);
+        }
     }
     for (int n : crossed.onSweepNodes)
         touched.tets.insert(touched.tets.end(), mesh.nodeTets(n).begin(), mesh.nodeTets(n).end());
@@ -92,23 +133,24 @@ TouchedTets gatherTouchedTets(const TetMesh& mesh, const IntersectedEdges& cross
 
     touched.crossedMask.assign(touched.tets.size(), 0);
     touched.partial.assign(touched.tets.size(), 0);
-    for (std::size_t k = 0; k < touched.tets.size(); ++k) {
-        const Tet& q = mesh.tet(touched.tets[k]);
-        for (int e = 0; e < 6; ++e)
-            if (crossedIndex(crossed, q[kTetEdges[e][0]], q[kTetEdges[e][1]]) >= 0)
-                touched.crossedMask[k] |= static_cast<std::uint8_t>(1 << e);
-    }
+    assert(position.clearValue() == -1);
+    touched.position = &position;
+    for (std::size_t k = 0; k < touched.tets.size(); ++k)
+        position.set(touched.tets[k], static_cast<int>(k));
+    for (const auto& [t, le] : crossings)
+        touched.crossedMask[touched.find(t)] |= static_cast<std::uint8_t>(1 << le);
     return touched;
 }
 
 /// Rule "nodes of partially cut tets are never cut nodes" (section 4.4): marks the partially
-/// cut tets in `touched` and returns their nodes. A node on the sweep counts as a cut node
-/// of a tet only while it is eligible, so each newly ineligible node on the sweep may make
-/// more tets partial: iterated to a fixed point.
-std::unordered_set<int> markPartialTets(const TetMesh& mesh, const IntersectedEdges& crossed,
-                                        TouchedTets& touched) {
-    const std::unordered_set<int> onSweep(crossed.onSweepNodes.begin(), crossed.onSweepNodes.end());
-    std::unordered_set<int> ineligible;
+/// cut tets in `touched` and, per node, whether it is such a node (kIneligible in `node`,
+/// which it also marks kOnSweep for the nodes on the sweep). A node on the sweep counts as a
+/// cut node of a tet only while it is eligible, so each newly ineligible node on the sweep may
+/// make more tets partial: iterated to a fixed point.
+void markPartialTets(const TetMesh& mesh, const IntersectedEdges& crossed, TouchedTets& touched,
+                     IndexMarks<std::uint8_t>& node) {
+    for (int n : crossed.onSweepNodes)
+        node.set(n, static_cast<std::uint8_t>(node[n] | kOnSweep));
     for (bool changed = true; changed;) {
         changed = false;
         for (std::size_t k = 0; k < touched.tets.size(); ++k) {
@@ -117,83 +159,91 @@ std::unordered_set<int> markPartialTets(const TetMesh& mesh, const IntersectedEd
             const Tet& q = mesh.tet(touched.tets[k]);
             std::uint8_t onCut = 0;
             for (int i = 0; i < 4; ++i)
-                if (onSweep.count(q[i]) && !ineligible.count(q[i]))
+                if (node[q[i]] == kOnSweep) // on the sweep and still eligible
                     onCut |= static_cast<std::uint8_t>(1 << i);
             if (isComplete(touched.crossedMask[k], onCut))
                 continue;
             touched.partial[k] = 1;
-            for (int v : q)
-                if (ineligible.insert(v).second && onSweep.count(v))
+            for (int v : q) {
+                if (node[v] & kIneligible)
+                    continue;
+                node.set(v, static_cast<std::uint8_t>(node[v] | kIneligible));
+                if (node[v] & kOnSweep)
                     changed = true;
+            }
         }
     }
-    return ineligible;
 }
 
-/// Cut node -> its distance to the sweep.
-using CutNodeDistances = std::unordered_map<int, double>;
+/// The chosen cut nodes: per node whether it is one (kCut in the selection's node flags), and
+/// (node, distance to the sweep) in the order chosen.
+struct CutNodeDistances {
+    const IndexMarks<std::uint8_t>* node = nullptr; ///< the selection's node flags
+    std::vector<std::pair<int, double>> chosen;
+
+    bool isCut(int n) const { return (*node)[n] & kCut; }
+};
 
 /// Rules "a node exactly on the sweep is always a cut node" and "the nearer end within d"
 /// (section 4.3): eligible nodes on the sweep first (distance 0), then every crossed edge
 /// nominates its nearer end if it is closer than d to the sweep; nominees are accepted
 /// nearest first (ties by node index) unless a tet would get a fourth cut node.
 CutNodeDistances chooseCutNodes(const TetMesh& mesh, const SweepSurface& sweep,
-                                const IntersectedEdges& crossed,
-                                const std::unordered_set<int>& ineligible,
-                                const SelectOptions& options) {
-    CutNodeDistances cutDistance;
-    std::unordered_map<int, int> cutCountOfTet;
+                                const IntersectedEdges& crossed, const SelectOptions& options,
+                                IndexMarks<std::uint8_t>& node,
+                                IndexMarks<std::uint8_t>& cutNodesOfTet) {
+    CutNodeDistances cut;
+    cut.node = &node;
     const auto accept = [&](int n, double distance) {
         for (int t : mesh.nodeTets(n))
-            if (cutCountOfTet[t] >= 3)
+            if (cutNodesOfTet[t] >= 3)
                 return false;
         for (int t : mesh.nodeTets(n))
-            ++cutCountOfTet[t];
-        cutDistance[n] = distance;
+            cutNodesOfTet.set(t, static_cast<std::uint8_t>(cutNodesOfTet[t] + 1));
+        node.set(n, static_cast<std::uint8_t>(node[n] | kCut));
+        cut.chosen.push_back({n, distance});
         return true;
     };
     for (int n : crossed.onSweepNodes)
-        if (!ineligible.count(n))
+        if (!(node[n] & kIneligible))
             accept(n, 0.0);
     if (!options.allowCutNodes || !(options.d > 0))
-        return cutDistance;
-    std::unordered_map<int, double> nominee;
+        return cut;
+    std::vector<std::pair<double, int>> order;
     for (const EdgeCrossing& e : crossed.edges) {
         const int n = e.hit.t <= 0.5 ? e.a : e.b;
-        if (ineligible.count(n) || cutDistance.count(n) || nominee.count(n))
+        if (node[n] & (kIneligible | kCut | kNominated))
             continue;
+        node.set(n, static_cast<std::uint8_t>(node[n] | kNominated));
         const double dist = sweep.closestPoint(mesh.pos(n)).distance;
         if (dist < options.d)
-            nominee[n] = dist;
+            order.push_back({dist, n});
     }
-    std::vector<std::pair<double, int>> order;
-    for (const auto& [n, dist] : nominee)
-        order.push_back({dist, n});
     std::sort(order.begin(), order.end());
     for (const auto& [dist, n] : order)
         accept(n, dist);
-    return cutDistance;
+    return cut;
 }
 
 /// The cut nodes sorted, with their distances and the largest distance.
-void listCutNodes(const CutNodeDistances& cutDistance, CutSelection& sel) {
-    for (const auto& [n, dist] : cutDistance)
+void listCutNodes(const CutNodeDistances& cut, CutSelection& sel) {
+    std::vector<std::pair<int, double>> byNode = cut.chosen;
+    std::sort(byNode.begin(), byNode.end());
+    for (const auto& [n, dist] : byNode) {
         sel.cutNodes.push_back(n);
-    std::sort(sel.cutNodes.begin(), sel.cutNodes.end());
-    for (int n : sel.cutNodes) {
-        sel.cutNodeDistance.push_back(cutDistance.at(n));
-        sel.maxCutNodeDistance = std::max(sel.maxCutNodeDistance, cutDistance.at(n));
+        sel.cutNodeDistance.push_back(dist);
+        sel.maxCutNodeDistance = std::max(sel.maxCutNodeDistance, dist);
     }
 }
 
 /// Cut edges: the crossed edges with no cut node at either end (section 4.3). Rule
 /// "minEdgeFraction": a crossing closer than that fraction of the edge to an end node is
 /// moved to that fraction, so that no split creates a zero-volume tet.
-void listCutEdges(const TetMesh& mesh, const IntersectedEdges& crossed,
-                  const CutNodeDistances& cutDistance, double minEdgeFraction, CutSelection& sel) {
+void listCutEdges(const TetMesh& mesh, const IntersectedEdges& crossed, const CutNodeDistances& cut,
+                  double minEdgeFraction, CutSelection& sel) {
     const double lo = minEdgeFraction, hi = 1.0 - minEdgeFraction;
     for (const EdgeCrossing& e : crossed.edges) {
-        if (cutDistance.count(e.a) || cutDistance.count(e.b))
+        if (cut.isCut(e.a) || cut.isCut(e.b))
             continue;
         EdgeCrossing c = e;
         if (c.hit.t < lo || c.hit.t > hi) {
@@ -269,16 +319,19 @@ void tetSides(const TetMesh& mesh, const SweepSurface& sweep, const IntersectedE
 /// Codes, scheme (Figure 4) and node sides of tet t; false if the tet is touched only at a
 /// node that could not be a cut node (nothing to do).
 bool classifyTet(const TetMesh& mesh, const SweepSurface& sweep, const IntersectedEdges& crossed,
-                 const TouchedTets& touched, const CutNodeDistances& cutDistance,
-                 const CutSelection& sel, int t, TetCut& tc) {
+                 const TouchedTets& touched, const CutNodeDistances& cut, const CutSelection& sel,
+                 int t, TetCut& tc) {
     const Tet& q = mesh.tet(t);
     tc = TetCut{};
     tc.tet = t;
     for (int i = 0; i < 4; ++i)
-        if (cutDistance.count(q[i]))
+        if (cut.isCut(q[i]))
             tc.nodeCode |= static_cast<std::uint8_t>(1 << i);
+    // Cut edges are the crossed edges without a cut node at either end (listCutEdges).
+    const std::uint8_t crossedEdges = touched.crossedEdges(t);
     for (int e = 0; e < 6; ++e)
-        if (sel.cutEdgeIndex.count(edgeKey(q[kTetEdges[e][0]], q[kTetEdges[e][1]])))
+        if ((crossedEdges >> e & 1) && !(tc.nodeCode >> kTetEdges[e][0] & 1) &&
+            !(tc.nodeCode >> kTetEdges[e][1] & 1))
             tc.edgeCode |= static_cast<std::uint8_t>(1 << e);
     tc.partial = touched.isPartial(t);
     const int cutNodes = __builtin_popcount(tc.nodeCode);
@@ -315,17 +368,26 @@ Scheme CutChanges::schemeOf(int t) const {
 
 CutSelection selectCutNodes(const TetMesh& mesh, const SweepSurface& sweep,
                             const IntersectedEdges& crossed, const SelectOptions& options) {
+    // Marks per node and per tet, kept between cuts on this thread and cleared when the scopes
+    // end, in proportion to what this selection set (see "Marks" at HybridCutter::cut).
+    thread_local IndexMarks<std::uint8_t> nodeFlags;
+    thread_local IndexMarks<int> tetPosition(-1);
+    thread_local IndexMarks<std::uint8_t> cutNodesOfTet;
+    const auto nodeScope = nodeFlags.use(mesh.nodeCount());
+    const auto positionScope = tetPosition.use(mesh.tetCount());
+    const auto countScope = cutNodesOfTet.use(mesh.tetCount());
     // The rules of select_cut_nodes.h, in order: partial tets first (their nodes are never cut
     // nodes), then cut nodes, then cut edges, then the codes and sides of every affected tet.
-    TouchedTets touched = gatherTouchedTets(mesh, crossed);
-    const std::unordered_set<int> ineligible = markPartialTets(mesh, crossed, touched);
-    const CutNodeDistances cutDistance = chooseCutNodes(mesh, sweep, crossed, ineligible, options);
+    TouchedTets touched = gatherTouchedTets(mesh, crossed, tetPosition);
+    markPartialTets(mesh, crossed, touched, nodeFlags);
+    const CutNodeDistances cut =
+        chooseCutNodes(mesh, sweep, crossed, options, nodeFlags, cutNodesOfTet);
     CutSelection sel;
-    listCutNodes(cutDistance, sel);
-    listCutEdges(mesh, crossed, cutDistance, options.minEdgeFraction, sel);
+    listCutNodes(cut, sel);
+    listCutEdges(mesh, crossed, cut, options.minEdgeFraction, sel);
     for (int t : affectedTets(mesh, touched, sel.cutNodes)) {
         TetCut tc;
-        if (classifyTet(mesh, sweep, crossed, touched, cutDistance, sel, t, tc))
+        if (classifyTet(mesh, sweep, crossed, touched, cut, sel, t, tc))
             sel.tets.push_back(tc);
     }
     return sel;

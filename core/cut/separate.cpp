@@ -1,10 +1,10 @@
 #include "core/cut/separate.h"
 
+#include "core/mesh/edge_key_table.h"
+#include "core/mesh/index_marks.h"
 #include "core/mesh/union_find.h"
 
 #include <algorithm>
-#include <unordered_map>
-#include <unordered_set>
 
 namespace resect {
 
@@ -15,19 +15,32 @@ Separation separate(TetMesh& mesh, const CutSelection& selection, const Decompos
     for (const auto& [key, node] : decomposition.edgePoint)
         cutVertices.push_back(node);
     std::sort(cutVertices.begin(), cutVertices.end());
-    const std::unordered_set<int> isCut(cutVertices.begin(), cutVertices.end());
-    const auto sideOfTet = [&](int t) {
-        auto it = decomposition.tetSide.find(t);
-        return it == decomposition.tetSide.end() ? 0 : static_cast<int>(it->second);
+    const auto isCut = [&](int v) {
+        return std::binary_search(cutVertices.begin(), cutVertices.end(), v);
     };
+    // Sides by tet (0 where the decomposition gave none), read for every tet of every star;
+    // marks kept between cuts on this thread (see "Marks" at HybridCutter::cut).
+    thread_local IndexMarks<std::int8_t> sideOfTet;
+    const auto scope = sideOfTet.use(mesh.tetCount());
+    for (const auto& [t, s] : decomposition.tetSide)
+        if (t < mesh.tetCount())
+            sideOfTet.set(t, s);
 
-    std::unordered_set<int> separatedTets;
+    // Reused from vertex to vertex: the star, its tets' sides, its faces, its groups.
+    std::vector<int> star, side, separatedTets;
+    EdgeKeyTable firstTetOfFace;
+    UnionFind groups;
+    std::vector<std::pair<int, int>> nodeOfGroup; // (group representative, node), a few
     for (int v : cutVertices) {
-        const std::vector<int> star(mesh.nodeTets(v).begin(), mesh.nodeTets(v).end());
+        star.assign(mesh.nodeTets(v).begin(), mesh.nodeTets(v).end());
         const int n = static_cast<int>(star.size());
-        UnionFind groups(n);  // over the positions k of star
-        // Faces containing v, keyed by their other two nodes.
-        std::unordered_map<std::uint64_t, int> firstTetOfFace;
+        side.resize(n);
+        for (int k = 0; k < n; ++k)
+            side[k] = sideOfTet[star[k]];
+        groups.reset(n); // over the positions k of star
+        // Faces containing v, keyed by their other two nodes: a face's tets are joined unless
+        // it is a cut face.
+        firstTetOfFace.clear();
         for (int k = 0; k < n; ++k) {
             const Tet& q = mesh.tet(star[k]);
             for (int i = 0; i < 4; ++i) {
@@ -36,36 +49,34 @@ Separation separate(TetMesh& mesh, const CutSelection& selection, const Decompos
                 for (int j = i + 1; j < 4; ++j) {
                     if (q[j] == v)
                         continue;
-                    const std::uint64_t key = edgeKey(q[i], q[j]);
-                    auto [it, inserted] = firstTetOfFace.try_emplace(key, k);
+                    const auto [other, inserted] = firstTetOfFace.tryInsert(edgeKey(q[i], q[j]), k);
                     if (inserted)
                         continue;
-                    const int other = it->second;
-                    const int s1 = sideOfTet(star[k]), s2 = sideOfTet(star[other]);
-                    const bool cutFace = s1 != 0 && s2 != 0 && s1 != s2 && isCut.count(q[i]) &&
-                                         isCut.count(q[j]);
+                    const int s1 = side[k], s2 = side[other];
+                    const bool cutFace =
+                        s1 != 0 && s2 != 0 && s1 != s2 && isCut(q[i]) && isCut(q[j]);
                     if (!cutFace)
                         groups.unite(k, other);
                 }
             }
         }
         // One copy of v per extra group; the group of the first tet on the + side keeps v.
-        std::unordered_map<int, int> nodeOfGroup;
         int keeper = -1;
         for (int k = 0; k < n && keeper < 0; ++k)
-            if (sideOfTet(star[k]) > 0)
+            if (side[k] > 0)
                 keeper = groups.find(k);
         if (keeper < 0)
             keeper = groups.find(0);
-        nodeOfGroup[keeper] = v;
+        nodeOfGroup.assign(1, {keeper, v});
         for (int k = 0; k < n; ++k) {
             const int g = groups.find(k);
-            auto it = nodeOfGroup.find(g);
+            auto it = std::find_if(nodeOfGroup.begin(), nodeOfGroup.end(),
+                                   [&](const auto& e) { return e.first == g; });
             int node;
             if (it == nodeOfGroup.end()) {
                 node = mesh.addNode(mesh.ref(v), mesh.pos(v));
                 mesh.velocities()[node] = mesh.velocities()[v];
-                nodeOfGroup.emplace(g, node);
+                nodeOfGroup.push_back({g, node});
                 changes.duplicatedNodes.push_back({v, node});
                 ++result.duplicatedNodes;
             } else {
@@ -76,12 +87,14 @@ Separation separate(TetMesh& mesh, const CutSelection& selection, const Decompos
             Tet q = mesh.tet(star[k]);
             std::replace(q.begin(), q.end(), v, node);
             mesh.replaceTet(star[k], q);
-            separatedTets.insert(star[k]);
+            separatedTets.push_back(star[k]);
             if (star[k] < changes.firstNewTet)
                 changes.modifiedTets.push_back(star[k]);
         }
     }
-    result.separatedTets = static_cast<int>(separatedTets.size());
+    std::sort(separatedTets.begin(), separatedTets.end());
+    result.separatedTets = static_cast<int>(
+        std::unique(separatedTets.begin(), separatedTets.end()) - separatedTets.begin());
     return result;
 }
 

@@ -1,8 +1,9 @@
 #include "core/cut/snap_nodes.h"
 
+#include "core/mesh/node_star.h"
 #include "core/mesh/predicates.h"
 #include "core/mesh/quality.h"
-#include "core/mesh/topology.h"
+#include "core/mesh/vec3_lanes.h"
 
 #include <Eigen/LU>
 
@@ -14,47 +15,87 @@
 
 namespace resect {
 
-Vec3 tetCoordinates(const Vec3& x, const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
-    // Cramer's rule on [p1-p0, p2-p0, p3-p0] l = x-p0 with triple products: a tenth of the
-    // cost of a pivoting LU, which mattered in relaxation (every trial move maps its target
-    // through each incident tet). A degenerate tet gives non-finite coordinates (callers
-    // skip those).
-    const Vec3 a = p1 - p0, b = p2 - p0, c = p3 - p0, y = x - p0;
-    const Vec3 bc = b.cross(c);
-    const double det = a.dot(bc);
-    return Vec3(y.dot(bc), a.dot(y.cross(c)), a.dot(b.cross(y))) / det;
-}
-
 Vec3 referenceInTet(const TetMesh& mesh, const Tet& q, const Vec3& pos) {
     const Vec3 l = tetCoordinates(pos, mesh.pos(q[0]), mesh.pos(q[1]), mesh.pos(q[2]), mesh.pos(q[3]));
     return mesh.ref(q[0]) + l[0] * (mesh.ref(q[1]) - mesh.ref(q[0])) + l[1] * (mesh.ref(q[2]) - mesh.ref(q[0])) +
            l[2] * (mesh.ref(q[3]) - mesh.ref(q[0]));
 }
 
-Vec3 referenceFromDeformed(const TetMesh& mesh, const std::vector<int>& group, const Vec3& pos) {
-    double bestMin = -std::numeric_limits<double>::infinity();
-    Vec3 ref = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
-    for (int v : group)
-        for (int t : mesh.nodeTets(v)) {
-            const Tet& q = mesh.tet(t);
-            const Vec3 l = tetCoordinates(pos, mesh.pos(q[0]), mesh.pos(q[1]), mesh.pos(q[2]), mesh.pos(q[3]));
-            if (!l.allFinite())
-                continue;
-            const double smallest = std::min({1.0 - l.sum(), l[0], l[1], l[2]});
-            if (smallest > bestMin) {
-                bestMin = smallest;
-                ref = mesh.ref(q[0]) + l[0] * (mesh.ref(q[1]) - mesh.ref(q[0])) + l[1] * (mesh.ref(q[2]) - mesh.ref(q[0])) +
-                      l[2] * (mesh.ref(q[3]) - mesh.ref(q[0]));
-            }
+namespace {
+
+/// Of the tets offered in turn, the one containing `pos` best (largest smallest barycentric
+/// coordinate, the first of equals), and `pos` mapped into its reference configuration.
+class BestContainingTet {
+public:
+    explicit BestContainingTet(const Vec3& pos) : m_pos(pos) {}
+    void offer(const TetMesh& mesh, const Tet& q) {
+        consider(
+            mesh, q,
+            tetCoordinates(m_pos, mesh.pos(q[0]), mesh.pos(q[1]), mesh.pos(q[2]), mesh.pos(q[3])));
+    }
+    /// offer(q) then offer(r), their coordinates computed side by side (tetCoordinates lane by
+    /// lane, the same values).
+    void offerPair(const TetMesh& mesh, const Tet& q, const Tet& r) {
+        const Vec3Lanes p0(mesh.pos(q[0]), mesh.pos(r[0]));
+        const Vec3Lanes a = Vec3Lanes(mesh.pos(q[1]), mesh.pos(r[1])) - p0;
+        const Vec3Lanes b = Vec3Lanes(mesh.pos(q[2]), mesh.pos(r[2])) - p0;
+        const Vec3Lanes c = Vec3Lanes(mesh.pos(q[3]), mesh.pos(r[3])) - p0;
+        const Vec3Lanes y = Vec3Lanes(m_pos, m_pos) - p0;
+        const Vec3Lanes bc = cross(b, c);
+        const Lanes det = dot(a, bc);
+        const Vec3Lanes l = Vec3Lanes(dot(y, bc), dot(a, cross(y, c)), dot(a, cross(b, y))) / det;
+        consider(mesh, q, l.lane(0));
+        consider(mesh, r, l.lane(1));
+    }
+    const Vec3& reference() const { return m_ref; }
+
+private:
+    void consider(const TetMesh& mesh, const Tet& q, const Vec3& l) {
+        if (!l.allFinite())
+            return;
+        const double smallest = std::min({1.0 - l.sum(), l[0], l[1], l[2]});
+        if (smallest > m_bestMin) {
+            m_bestMin = smallest;
+            m_ref = mesh.ref(q[0]) + l[0] * (mesh.ref(q[1]) - mesh.ref(q[0])) +
+                    l[1] * (mesh.ref(q[2]) - mesh.ref(q[0])) +
+                    l[2] * (mesh.ref(q[3]) - mesh.ref(q[0]));
         }
-    return ref;
+    }
+
+    Vec3 m_pos;
+    double m_bestMin = -std::numeric_limits<double>::infinity();
+    Vec3 m_ref = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+};
+
+} // namespace
+
+Vec3 referenceFromDeformed(const TetMesh& mesh, const std::vector<int>& group, const Vec3& pos) {
+    BestContainingTet best(pos);
+    for (int v : group)
+        for (int t : mesh.nodeTets(v))
+            best.offer(mesh, mesh.tet(t));
+    return best.reference();
+}
+
+Vec3 referenceFromDeformedIn(const TetMesh& mesh, std::span<const int> incidentTets,
+                             const Vec3& pos) {
+    BestContainingTet best(pos);
+    std::size_t k = 0;
+    for (; k + 1 < incidentTets.size(); k += 2)
+        best.offerPair(mesh, mesh.tet(incidentTets[k]), mesh.tet(incidentTets[k + 1]));
+    if (k < incidentTets.size())
+        best.offer(mesh, mesh.tet(incidentTets[k]));
+    return best.reference();
 }
 
 std::vector<int> boundaryNodesAmong(const TetMesh& mesh, const std::vector<int>& nodes) {
     std::vector<int> result;
-    for (int n : nodes)
-        if (isBoundaryNode(mesh, n))
+    NodeStar star;
+    for (int n : nodes) {
+        star.gather(mesh, n);
+        if (star.onBoundary())
             result.push_back(n);
+    }
     return result;
 }
 

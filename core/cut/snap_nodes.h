@@ -9,6 +9,9 @@
 #include "core/cut/cut_types.h"
 #include "core/sweep/sweep_surface.h"
 
+#include <span>
+#include <vector>
+
 namespace resect {
 
 struct SnapOptions {
@@ -33,15 +36,30 @@ std::vector<int> boundaryNodesAmong(const TetMesh& mesh, const std::vector<int>&
 
 /// Reference position for a node of `group` (coincident copies) moved to `pos` in the deformed
 /// configuration: barycentric coordinates of `pos` in the incident tet that contains it best
-/// (largest smallest coordinate), applied to that tet's reference positions (the paper's
-/// ref. [16]). Non-finite if every incident tet is flat.
+/// (largest smallest coordinate, the first of equals), applied to that tet's reference
+/// positions (the paper's ref. [16]). Non-finite if every incident tet is flat.
 Vec3 referenceFromDeformed(const TetMesh& mesh, const std::vector<int>& group, const Vec3& pos);
+
+/// The same, given the tets incident to the group (in the order of its nodes, each node's
+/// tets in mesh order), for a caller that moves the same group many times.
+Vec3 referenceFromDeformedIn(const TetMesh& mesh, std::span<const int> incidentTets,
+                             const Vec3& pos);
 
 /// The same mapping for a point in one tet.
 Vec3 referenceInTet(const TetMesh& mesh, const Tet& tet, const Vec3& pos);
 
 /// (l1, l2, l3) with x = p0 + l1 (p1 - p0) + l2 (p2 - p0) + l3 (p3 - p0); the fourth
 /// barycentric coordinate is 1 - l1 - l2 - l3. Non-finite for a flat tet.
-Vec3 tetCoordinates(const Vec3& x, const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3);
+inline Vec3 tetCoordinates(const Vec3& x, const Vec3& p0, const Vec3& p1, const Vec3& p2,
+                           const Vec3& p3) {
+    // Cramer's rule on [p1-p0, p2-p0, p3-p0] l = x-p0 with triple products: a tenth of the
+    // cost of a pivoting LU, which matters in relaxation (every trial move maps its target
+    // through each incident tet). A degenerate tet gives non-finite coordinates (callers
+    // skip those).
+    const Vec3 a = p1 - p0, b = p2 - p0, c = p3 - p0, y = x - p0;
+    const Vec3 bc = b.cross(c);
+    const double det = a.dot(bc);
+    return Vec3(y.dot(bc), a.dot(y.cross(c)), a.dot(b.cross(y))) / det;
+}
 
 } // namespace resect

@@ -8,7 +8,7 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 K::Point_3 toCgal(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
 } // namespace
 
-int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+int orient3dExact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
     // CGAL::orientation(p, q, r, s) is POSITIVE when s lies on the positive side of the
     // oriented plane (p, q, r), i.e. det[q-p, r-p, s-p] > 0.
     return static_cast<int>(CGAL::orientation(toCgal(a), toCgal(b), toCgal(c), toCgal(d)));

@@ -1,6 +1,7 @@
 #include "core/mesh/quality.h"
 
 #include "core/mesh/topology.h"
+#include "core/mesh/vec3_lanes.h"
 
 #include <Eigen/Geometry>
 
@@ -74,25 +75,36 @@ TetQuality tetQuality(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3
     return q;
 }
 
-double radiusRatio(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
-    double lmax2 = 0;
-    const Vec3 p[4] = {p0, p1, p2, p3};
-    for (const auto& e : kTetEdges)
-        lmax2 = std::max(lmax2, (p[e[1]] - p[e[0]]).squaredNorm());
-    if (!(lmax2 > 0) || !std::isfinite(lmax2))
-        return 0;
-    const double s = 1.0 / std::sqrt(lmax2);
-    const Vec3 a = (p1 - p0) * s, b = (p2 - p0) * s, c = (p3 - p0) * s;
-    const double sixV = a.dot(b.cross(c));
-    const double areaSum = 0.5 * (a.cross(b).norm() + b.cross(c).norm() + c.cross(a).norm() +
-                                  (b - a).cross(c - a).norm());
-    const Vec3 num = a.squaredNorm() * b.cross(c) + b.squaredNorm() * c.cross(a) + c.squaredNorm() * a.cross(b);
-    const double absSixV = std::abs(sixV);
-    if (!(absSixV > 0) || !(areaSum > 0))
-        return 0;
-    const double rIn = (absSixV / 2.0) / areaSum;
-    const double rCirc = num.norm() / (2.0 * absSixV);
-    return std::copysign(3.0 * rIn / rCirc, sixV);
+std::array<double, 2> radiusRatioPair(const std::array<Vec3, 4>& s, const std::array<Vec3, 4>& t) {
+    // radiusRatio line by line, on both tets at once.
+    Vec3Lanes p[4];
+    for (int i = 0; i < 4; ++i)
+        p[i] = Vec3Lanes(s[i], t[i]);
+    Lanes lmax2 = Lanes::Zero();
+    for (const auto& e : kTetEdges) {
+        const Vec3Lanes d = p[e[1]] - p[e[0]];
+        lmax2 = lmax2.max(dot(d, d)); // (d > lmax2 ? d : lmax2), as std::max(lmax2, d)
+    }
+    const Lanes scale = Lanes::Ones() / lmax2.sqrt();
+    const Vec3Lanes a = (p[1] - p[0]) * scale, b = (p[2] - p[0]) * scale, c = (p[3] - p[0]) * scale;
+    const Vec3Lanes bc = cross(b, c), ca = cross(c, a), ab = cross(a, b), far = cross(b - a, c - a);
+    const Lanes sixV = dot(a, bc);
+    const Lanes areaSum = 0.5 * (((dot(ab, ab).sqrt() + dot(bc, bc).sqrt()) + dot(ca, ca).sqrt()) +
+                                 dot(far, far).sqrt());
+    const Lanes a2 = dot(a, a), b2 = dot(b, b), c2 = dot(c, c);
+    const Vec3Lanes num = {(a2 * bc.x + b2 * ca.x) + c2 * ab.x, (a2 * bc.y + b2 * ca.y) + c2 * ab.y,
+                           (a2 * bc.z + b2 * ca.z) + c2 * ab.z};
+    const Lanes absSixV = sixV.abs();
+    const Lanes rIn = (absSixV / 2.0) / areaSum;
+    const Lanes rCirc = dot(num, num).sqrt() / (2.0 * absSixV);
+    const Lanes ratio = 3.0 * rIn / rCirc;
+    std::array<double, 2> out;
+    for (int l = 0; l < 2; ++l) {
+        const bool degenerate =
+            !(lmax2[l] > 0) || !std::isfinite(lmax2[l]) || !(absSixV[l] > 0) || !(areaSum[l] > 0);
+        out[l] = degenerate ? 0.0 : std::copysign(ratio[l], sixV[l]);
+    }
+    return out;
 }
 
 std::vector<TetQuality> tetQualities(const TetMesh& mesh) {

@@ -3,6 +3,7 @@
 #include "core/mesh/predicates.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -19,6 +20,11 @@ struct SweepSurface::Bvh {
     };
     std::vector<Node> nodes;
     std::vector<int> order;
+    std::vector<Box3> triangleBox;  ///< by triangle: the box of its three vertices
+    /// Traversal stacks live on the call stack (queries run per mesh edge and per relaxed
+    /// node): a depth-first walk holds at most one pending node per level plus one, and
+    /// median splits of fewer than 2^31 triangles make fewer than 32 levels.
+    static constexpr int kMaxStack = 64;
 };
 
 SweepSurface::SweepSurface() = default;
@@ -135,6 +141,7 @@ void SweepSurface::build() {
             box[t].extend(m_vertices[v]);
         centroid[t] = box[t].center();
     }
+    bvh.triangleBox = box;
     constexpr int kLeafSize = 4;
     struct Item {
         int node, first, count;
@@ -173,25 +180,23 @@ void SweepSurface::trianglesOverlapping(const Box3& box, std::vector<int>& out) 
     out.clear();
     if (!m_bvh || m_bvh->nodes.empty())
         return;
-    std::vector<int> stack{0};
-    while (!stack.empty()) {
-        const Bvh::Node& node = m_bvh->nodes[stack.back()];
-        stack.pop_back();
+    int stack[Bvh::kMaxStack];
+    int depth = 0;
+    stack[depth++] = 0;
+    while (depth > 0) {
+        const Bvh::Node& node = m_bvh->nodes[stack[--depth]];
         if (!node.box.intersects(box))
             continue;
         if (node.left < 0) {
             for (int k = node.first; k < node.first + node.count; ++k) {
                 const int t = m_bvh->order[k];
-                Box3 tb;
-                tb.setEmpty();
-                for (int v : m_triangles[t])
-                    tb.extend(m_vertices[v]);
-                if (tb.intersects(box))
+                if (m_bvh->triangleBox[t].intersects(box))
                     out.push_back(t);
             }
         } else {
-            stack.push_back(node.left);
-            stack.push_back(node.right);
+            assert(depth + 2 <= Bvh::kMaxStack);
+            stack[depth++] = node.left;
+            stack[depth++] = node.right;
         }
     }
 }
@@ -238,10 +243,11 @@ SweepSurface::Closest SweepSurface::closestPoint(const Vec3& p) const {
     if (!m_bvh || m_bvh->nodes.empty())
         return best;
     double best2 = std::numeric_limits<double>::infinity();
-    std::vector<int> stack{0};
-    while (!stack.empty()) {
-        const Bvh::Node& node = m_bvh->nodes[stack.back()];
-        stack.pop_back();
+    int stack[Bvh::kMaxStack];
+    int depth = 0;
+    stack[depth++] = 0;
+    while (depth > 0) {
+        const Bvh::Node& node = m_bvh->nodes[stack[--depth]];
         if (node.box.squaredExteriorDistance(p) >= best2)
             continue;
         if (node.left < 0) {
@@ -265,12 +271,13 @@ SweepSurface::Closest SweepSurface::closestPoint(const Vec3& p) const {
             // Visit the nearer child last so that it is popped first.
             const double dl = m_bvh->nodes[node.left].box.squaredExteriorDistance(p);
             const double dr = m_bvh->nodes[node.right].box.squaredExteriorDistance(p);
+            assert(depth + 2 <= Bvh::kMaxStack);
             if (dl < dr) {
-                stack.push_back(node.right);
-                stack.push_back(node.left);
+                stack[depth++] = node.right;
+                stack[depth++] = node.left;
             } else {
-                stack.push_back(node.left);
-                stack.push_back(node.right);
+                stack[depth++] = node.left;
+                stack[depth++] = node.right;
             }
         }
     }

@@ -86,6 +86,11 @@ Tissue::Tissue(const Tissue& other)
     const bool stepped = other.m_sim && other.m_sim->stepsTaken() != other.m_stepsSeen;
     m_indexStale = other.m_indexStale || stepped;
     m_surfaceStale = other.m_surfaceStale || stepped;
+    // Headroom like the mesh's (the cutter reserves it): a copy's arrays are exactly full, and
+    // the first cut would otherwise reallocate them, in proportion to the mesh.
+    m_schemes.reserve(m_schemes.size() * 5 / 4 + 4096);
+    m_tetCuts.reserve(m_tetCuts.size() * 5 / 4 + 4096);
+    m_onCut.reserve(m_onCut.size() * 5 / 4 + 1024);
     std::lock_guard lock(other.m_pieces->mutex);
     m_pieces->components = other.m_pieces->components;
 }

@@ -14,6 +14,7 @@
 
 #include <QTest>
 
+#include <cstring>
 #include <random>
 #include <unordered_set>
 
@@ -134,6 +135,28 @@ private slots:
         QCOMPARE(resect::tetCoordinates(Vec3(2, 4, 6), Vec3(1, 1, 1), Vec3(3, 1, 1), Vec3(1, 3, 1), Vec3(1, 1, 3)),
                  Vec3(0.5, 1.5, 2.5));
         QVERIFY(!resect::tetCoordinates(Vec3(0.1, 0.1, 0), o, x, y, Vec3(1, 1, 0)).allFinite());
+    }
+
+    /// referenceFromDeformedIn (given the incident tets; two tets at a time) must give
+    /// referenceFromDeformed's position bit for bit, ties between tets included, on a deformed
+    /// jittered box, for targets near every node and far outside the mesh.
+    void referenceFromIncidentTetsIsBitIdentical() {
+        TetMesh m = jitteredBox(1.0, 5, 0.1, 4);
+        std::mt19937 rng(11);
+        std::uniform_real_distribution<double> u(-1, 1);
+        for (int n = 0; n < m.nodeCount(); ++n)
+            m.positions()[n] = m.ref(n) + 0.05 * Vec3(u(rng), u(rng), u(rng)) + Vec3(0.3 * m.ref(n).z(), 0, 0);
+        int compared = 0;
+        for (int n = 0; n < m.nodeCount(); ++n)
+            for (const double reach : {0.01, 0.2, 5.0}) {
+                const Vec3 target = m.pos(n) + reach * Vec3(u(rng), u(rng), u(rng));
+                const Vec3 expected = referenceFromDeformed(m, {n}, target);
+                const Vec3 got = referenceFromDeformedIn(m, m.nodeTets(n), target);
+                QVERIFY2(std::memcmp(&expected, &got, sizeof got) == 0, qPrintable(QString::number(n)));
+                ++compared;
+            }
+        // A vertex of the box mesh has one to 24 tets: odd and even counts both occur.
+        QVERIFY(compared > 300);
     }
 
     void planarCutLeavesNoCrossingEdge_data() {

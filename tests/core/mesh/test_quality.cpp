@@ -4,7 +4,10 @@
 
 #include <QTest>
 
+#include <array>
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -127,6 +130,72 @@ private slots:
         const double mean = (54 + 36 * std::sqrt(2.0) + 8 * std::sqrt(3.0)) / 98 * scale;
         QVERIFY(std::abs(s.meanEdge - mean) <= 1e-12 * mean);
         QVERIFY(std::abs(meanEdgeLength(m) - mean) <= 1e-12 * mean);
+    }
+
+    /// radiusRatioPair promises radiusRatio's values bit for bit (relaxation relies on it: its
+    /// trial moves must decide exactly as before), on all kinds of tets in either lane.
+    void radiusRatioPairIsBitIdentical_data() {
+        QTest::addColumn<int>("kind"); // 0 random, 1 nearly flat, 2 flat or collapsed, 3 slivers
+        QTest::addColumn<double>("scale");
+        QTest::newRow("random") << 0 << 1.0;
+        QTest::newRow("random 1e-150") << 0 << 1e-150;
+        QTest::newRow("random 1e150") << 0 << 1e150;
+        QTest::newRow("nearly flat") << 1 << 1.0;
+        QTest::newRow("nearly flat 1e-6") << 1 << 1e-6;
+        QTest::newRow("flat or collapsed") << 2 << 1.0;
+        QTest::newRow("slivers") << 3 << 1.0;
+    }
+    void radiusRatioPairIsBitIdentical() {
+        QFETCH(int, kind);
+        QFETCH(double, scale);
+        std::mt19937_64 rng(kind * 7919 + 1);
+        std::uniform_real_distribution<double> u(-1, 1);
+        const auto random = [&] {
+            const double x = u(rng), y = u(rng), z = u(rng);
+            return Vec3(x, y, z);
+        };
+        const auto makeTet = [&] {
+            std::array<Vec3, 4> p{random(), random(), random(), random()};
+            if (kind == 1)
+                p[3] = p[0] + u(rng) * (p[1] - p[0]) + u(rng) * (p[2] - p[0]) + 1e-9 * random();
+            if (kind == 2) {
+                const int collapse = static_cast<int>(rng() % 3);
+                p[3] = collapse == 0   ? p[0]
+                       : collapse == 1 ? Vec3(p[0] + 0.5 * (p[1] - p[0]))
+                                       : p[2];
+                if (rng() % 4 == 0)
+                    p = {p[0], p[0], p[0], p[0]};
+            }
+            if (kind == 3) {
+                // Four points near the corners of a square: a flat, fat-looking sliver.
+                p = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+                for (auto& x : p)
+                    x += 1e-3 * random();
+            }
+            for (auto& x : p)
+                x *= scale;
+            return p;
+        };
+        const auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+        for (int i = 0; i < 50000; ++i) {
+            const std::array<Vec3, 4> s = makeTet(), t = makeTet();
+            const auto [rs, rt] = radiusRatioPair(s, t);
+            const double es = radiusRatio(s[0], s[1], s[2], s[3]),
+                         et = radiusRatio(t[0], t[1], t[2], t[3]);
+            if (!same(rs, es) || !same(rt, et))
+                QFAIL(qPrintable(QString("pair (%1, %2), alone (%3, %4)")
+                                     .arg(rs, 0, 'g', 17)
+                                     .arg(rt, 0, 'g', 17)
+                                     .arg(es, 0, 'g', 17)
+                                     .arg(et, 0, 'g', 17)));
+        }
+        // Non-finite corners: both give the same (0 for an infinite edge, NaN passes through).
+        const double inf = std::numeric_limits<double>::infinity();
+        const std::array<Vec3, 4> bad{Vec3(0, 0, 0), Vec3(inf, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+        const std::array<Vec3, 4> good{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+        const auto [rb, rg] = radiusRatioPair(bad, good);
+        QVERIFY(same(rb, radiusRatio(bad[0], bad[1], bad[2], bad[3])));
+        QVERIFY(same(rg, radiusRatio(good[0], good[1], good[2], good[3])));
     }
 };
 
