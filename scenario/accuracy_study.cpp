@@ -502,6 +502,7 @@ Status runScalingStudy(const StudyConfig& config, std::vector<ScalingRow>& rows,
         }
         row.surfaceUpdateMs = median(updateMs);
         row.surfaceNsPerVertex = 1e6 * row.surfaceUpdateMs / std::max(1, row.surfaceVertices);
+        row.surfaceGBps = row.surfaceNsPerVertex > 0 ? SurfaceBinding::kStreamedBytesPerVertex / row.surfaceNsPerVertex : 0;
         rows.push_back(row);
         ticker.advance(target);
     }
@@ -545,7 +546,7 @@ std::string scalingCsv(const std::vector<ScalingRow>& rows) {
         "mesh_tets,touched_tets,added_tets,cut_ms,cut_ms_min,us_per_touched_tet,us_per_touched_tet_hybrid,"
         "step_ns_per_tet_1t,"
         "step_ns_per_tet_2t,step_ns_per_tet_min_1t,step_ns_per_tet_min_2t,surface_vertices,"
-        "surface_update_ms,surface_ns_per_vertex\n";
+        "surface_update_ms,surface_ns_per_vertex,surface_gb_per_s\n";
     for (const ScalingRow& r : rows)
         s += std::to_string(r.meshTets) + "," + std::to_string(r.touchedTets) + "," + std::to_string(r.addedTets) +
              "," + format("%.6g", r.cutMs) + "," + format("%.6g", r.cutMsMin) + "," +
@@ -553,7 +554,8 @@ std::string scalingCsv(const std::vector<ScalingRow>& rows) {
              format("%.6g", r.stepNsPerTet1) + "," +
              format("%.6g", r.stepNsPerTet2) + "," + format("%.6g", r.stepNsPerTetMin1) + "," +
              format("%.6g", r.stepNsPerTetMin2) + "," + std::to_string(r.surfaceVertices) + "," +
-             format("%.6g", r.surfaceUpdateMs) + "," + format("%.6g", r.surfaceNsPerVertex) + "\n";
+             format("%.6g", r.surfaceUpdateMs) + "," + format("%.6g", r.surfaceNsPerVertex) + "," +
+             format("%.6g", r.surfaceGBps) + "\n";
     return s;
 }
 

@@ -125,6 +125,9 @@ struct ScalingRow {
     int surfaceVertices = 0;
     double surfaceUpdateMs = 0;   ///< median EmbeddedSurface::update (every vertex)
     double surfaceNsPerVertex = 0;
+    /// Bytes the update streams (SurfaceBinding::kStreamedBytesPerVertex per vertex) per second
+    /// of surfaceUpdateMs, GB/s: to compare with the machine's memory bandwidth.
+    double surfaceGBps = 0;
 };
 
 /// Progress: fraction done in [0, 1] and what runs now. Return false to cancel; the study

@@ -7,6 +7,7 @@
 #include "core/mesh/box_mesh.h"
 #include "core/mesher/samples.h"
 #include "core/mesher/tetrahedralize.h"
+#include "core/sim/parallel.h"
 #include "core/tissue/tissue.h"
 #include "scenario/accuracy_study.h"
 #include "scenario/atomic_file.h"
@@ -86,8 +87,29 @@ int runCutScaling(Args& args) {
 
 } // namespace
 
-/// Embedded-surface costs (section 5): bind once, apply per frame (per vertex), and after a
-/// cut re-bind (per re-bound vertex) and cut the surface, for a myoma surface of growing size.
+/// Memory bandwidth of this machine as a STREAM-like copy of two 128 MB arrays (bytes read +
+/// written per second, write-allocate not counted), on `threads` threads: the yardstick of the
+/// surface update, which streams its arrays once per frame.
+double copyBandwidthGBps(int threads) {
+    const std::int64_t n = 16 << 20;  // doubles per array
+    std::vector<double> a(n, 1.0), b(n, 0.0);
+    double best = 1e30;
+    for (int r = 0; r < 5; ++r) {
+        const auto t0 = std::chrono::steady_clock::now();
+        parallelRun(threads, [&](int t) {
+            const std::int64_t lo = chunkBegin(n, threads, t), hi = chunkBegin(n, threads, t + 1);
+            for (std::int64_t i = lo; i < hi; ++i)
+                b[i] = a[i] + 1.0;
+        });
+        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        std::swap(a, b);
+    }
+    return 16.0 * n / best / 1e9;
+}
+
+/// Embedded-surface costs (section 5): bind once, apply per frame (per vertex, on one and two
+/// threads, with the bandwidth it reaches), and after a cut re-bind (per re-bound vertex) and
+/// cut the surface, for a myoma surface of growing size.
 int runSurface(Args& args) {
     std::vector<double> details{1, 5};
     if (auto text = args.option("--details")) {
@@ -97,14 +119,19 @@ int runSurface(Args& args) {
         while (std::getline(ss, item, ',')) {
             char* end = nullptr;
             const double v = std::strtod(item.c_str(), &end);
-            if (end == item.c_str() || *end != 0 || !(v > 0) || v > 40)
-                badInput("--details: expected numbers in (0, 40], got '" + item + "'");
+            if (end == item.c_str() || *end != 0 || !(v > 0) || v > 50)
+                badInput("--details: expected numbers in (0, 50], got '" + item + "'");
             details.push_back(v);
         }
     }
     args.finish();
-    std::printf("%10s %10s %12s %14s %16s %14s %12s %12s %12s\n", "triangles", "vertices", "create_ms",
-                "apply_ns_vertex", "rebound_vertices", "rebind_us_vtx", "near_tris", "surf_cut_ms", "bind_new_ms");
+    std::printf("memory bandwidth (copy, as STREAM counts it): %.1f GB/s on 1 thread, %.1f GB/s on 2\n",
+                copyBandwidthGBps(1), copyBandwidthGBps(2));
+    std::printf("apply streams %d bytes per vertex (tet index, weights w1..w3, position written)\n",
+                SurfaceBinding::kStreamedBytesPerVertex);
+    std::printf("%10s %10s %12s %10s %10s %10s %10s %16s %14s %12s %12s %12s\n", "triangles", "vertices",
+                "create_ms", "apply_ns_1t", "GB/s_1t", "apply_ns_2t", "GB/s_2t", "rebound_vertices", "rebind_us_vtx",
+                "near_tris", "surf_cut_ms", "bind_new_ms");
     for (double detail : details) {
         TriangleSurface surface = sampleSurface(Sample::Myoma, detail);
         TetMesh mesh;
@@ -116,16 +143,23 @@ int runSurface(Args& args) {
         Tissue tissue;
         requireOk(Tissue::create(std::move(mesh), std::move(surface), Material{}, {}, tissue));
         const double createMs = ms(t0);  // Tissue::create: masses, spatial index, surface binding
-        std::vector<double> apply;
-        std::vector<Vec3> scratch;
-        for (int r = 0; r < 15; ++r) {
-            t0 = std::chrono::steady_clock::now();
-            tissue.surface().binding().apply(tissue.mesh(), scratch);
-            apply.push_back(ms(t0));
-        }
-        std::sort(apply.begin(), apply.end());
         const int vertices = tissue.surface().surface().vertexCount();
         const int triangles = tissue.surface().surface().triangleCount();
+        // Median of 15 updates into a buffer that already has its size (as every frame but the first).
+        std::vector<Vec3> scratch;
+        tissue.surface().binding().apply(tissue.mesh(), scratch);
+        double nsPerVertex[2] = {0, 0};
+        for (int threads : {1, 2}) {
+            std::vector<double> apply;
+            for (int r = 0; r < 15; ++r) {
+                t0 = std::chrono::steady_clock::now();
+                tissue.surface().binding().apply(tissue.mesh(), scratch, nullptr, threads);
+                apply.push_back(ms(t0));
+            }
+            std::sort(apply.begin(), apply.end());
+            nsPerVertex[threads - 1] = 1e6 * apply[apply.size() / 2] / vertices;
+        }
+        const auto gbps = [](double ns) { return SurfaceBinding::kStreamedBytesPerVertex / ns; };
         const auto [lo, hi] = boundingBox(tissue.mesh().positions());
         const double z = 0.5 * (lo.z() + hi.z()) + 0.013;
         SweepSurface sweep;
@@ -136,10 +170,10 @@ int runSurface(Args& args) {
         TissueCut result;
         requireOk(tissue.cut(sweep, CutOptions{}, &result));
         const EmbeddedCut& cut = result.surface;
-        std::printf("%10d %10d %12.1f %14.2f %16d %14.3f %12d %12.2f %12.2f\n", triangles, vertices, createMs,
-                    1e6 * apply[apply.size() / 2] / vertices, cut.reboundVertices,
-                    1e3 * cut.rebindMs / std::max(1, cut.reboundVertices), cut.surface.candidateTriangles, cut.cutMs,
-                    cut.bindNewMs);
+        std::printf("%10d %10d %12.1f %10.2f %10.1f %10.2f %10.1f %16d %14.3f %12d %12.2f %12.2f\n", triangles,
+                    vertices, createMs, nsPerVertex[0], gbps(nsPerVertex[0]), nsPerVertex[1], gbps(nsPerVertex[1]),
+                    cut.reboundVertices, 1e3 * cut.rebindMs / std::max(1, cut.reboundVertices),
+                    cut.surface.candidateTriangles, cut.cutMs, cut.bindNewMs);
         std::fflush(stdout);
     }
     return kOk;

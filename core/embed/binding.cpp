@@ -1,6 +1,7 @@
 #include "core/embed/binding.h"
 
 #include "core/cut/snap_nodes.h"
+#include "core/sim/parallel.h"
 
 #include <Eigen/LU>
 
@@ -9,7 +10,6 @@
 #include <limits>
 #include <numeric>
 #include <unordered_map>
-#include <unordered_set>
 
 namespace resect {
 
@@ -22,7 +22,7 @@ namespace {
 double smallest(const std::array<double, 4>& w) { return std::min({w[0], w[1], w[2], w[3]}); }
 } // namespace
 
-void SurfaceBinding::bindVertex(const TetMesh& mesh, int v, const Vec3& p, const std::vector<int>& candidates) {
+void SurfaceBinding::bindVertex(const TetMesh& mesh, int v, const Vec3& p, std::span<const int> candidates) {
     // The containing tet has all weights >= 0; otherwise the one "least outside".
     double best = -std::numeric_limits<double>::infinity();
     for (int t : candidates) {
@@ -33,10 +33,81 @@ void SurfaceBinding::bindVertex(const TetMesh& mesh, int v, const Vec3& p, const
         if (std::isfinite(s) && s > best) {
             best = s;
             m_tet[v] = t;
-            m_weights[v] = w;
+            setWeights(v, w);
         }
     }
 }
+
+namespace {
+
+/// barycentric() of p in the tet of frame f (the expressions of core/mesh/tet_mesh.cpp, so the
+/// same bits: test_binding checks every new vertex's weights against barycentric()), or false
+/// where a weight is certainly below `below`: the tet cannot contain p better than that. With
+/// below > 0 that is decided from the signs of the weights' numerators alone (a quotient whose
+/// numerator and denominator do not have the same strict sign rounds to <= 0), before dividing.
+bool barycentricAtLeast(const SurfaceBinding::TetFrame& f, const Vec3& p, double below, std::array<double, 4>& w) {
+    const Vec3 ap = p - f.a;
+    const double v = f.volume6;
+    const double n1 = ap.dot(f.acCrossAd), n2 = f.ab.dot(ap.cross(f.ad)), n3 = f.ab.dot(f.ac.cross(ap));
+    if (below > 0) {
+        const auto positive = [&](double n) { return v > 0 ? n > 0 : (v < 0 && n < 0); };
+        if (!(positive(n1) & positive(n2) & positive(n3)))
+            return false;
+    }
+    const double w1 = n1 / v, w2 = n2 / v, w3 = n3 / v;
+    if (w1 < below || w2 < below || w3 < below)
+        return false;
+    w = {1.0 - w1 - w2 - w3, w1, w2, w3};
+    return true;
+}
+
+} // namespace
+
+void SurfaceBinding::bindVertexInSet(const TetMesh& mesh, int v, const Vec3& p, std::span<const int> candidates,
+                                     std::span<const int> likely) {
+    double best = -std::numeric_limits<double>::infinity();
+    int bestTet = -1;
+    std::array<double, 4> w;
+    // The likely ones first (members of the set: evaluating one twice changes nothing), so that
+    // the others are ruled out early.
+    for (std::span<const int> list : {likely, candidates})
+    for (int t : list) {
+        if (t >= mesh.tetCount())
+            continue;
+        // A weight below the best so far rules the tet out (its smallest weight is lower).
+        if (!barycentricAtLeast(frameOf(mesh, t), p, best, w))
+            continue;
+        const double s = smallest(w);
+        if (std::isfinite(s) && (s > best || (s == best && t < bestTet))) {
+            best = s;
+            bestTet = t;
+            m_tet[v] = t;
+            setWeights(v, w);
+        }
+    }
+}
+
+const SurfaceBinding::TetFrame& SurfaceBinding::frameOf(const TetMesh& mesh, int t) {
+    if (m_frameSlot.has(t))
+        return m_frames[m_frameSlot.get(t)];
+    m_frameSlot.set(t, static_cast<int>(m_frames.size()));
+    TetFrame& f = m_frames.emplace_back();
+    const Tet& q = mesh.tet(t);
+    f.a = mesh.pos(q[0]);
+    f.ab = mesh.pos(q[1]) - f.a;
+    f.ac = mesh.pos(q[2]) - f.a;
+    f.ad = mesh.pos(q[3]) - f.a;
+    f.acCrossAd = f.ac.cross(f.ad);
+    f.volume6 = f.ab.dot(f.acCrossAd);
+    return f;
+}
+
+void SurfaceBinding::forgetFrames() {
+    m_frameSlot.clear();
+    m_frames.clear();
+}
+
+bool SurfaceBinding::isOutside(int v) const { return smallest(weightsOf(v)) < -m_tolerances.inside; }
 
 Status SurfaceBinding::bind(const TetMesh& mesh, const TriangleSurface& surface, const BindingTolerances& tolerances) {
     if (mesh.empty())
@@ -54,7 +125,7 @@ Status SurfaceBinding::bind(const TetMesh& mesh, const TriangleSurface& surface,
             return Status::error("surface has a non-finite vertex");
     const int n = surface.vertexCount();
     m_tet.assign(n, -1);
-    m_weights.assign(n, {1, 0, 0, 0});
+    m_weights.assign(n, {0, 0, 0});  // (w0 = 1)
     // Headroom for vertices that cuts add (bindNewVertices), so that they append in place.
     m_tet.reserve(n + n / 4 + 1024);
     m_weights.reserve(n + n / 4 + 1024);
@@ -70,11 +141,11 @@ Status SurfaceBinding::bind(const TetMesh& mesh, const TriangleSurface& surface,
             Eigen::AlignedBox3d box(p - Vec3::Constant(r), p + Vec3::Constant(r));
             grid.query(box, candidates);
             bindVertex(mesh, v, p, candidates);
-            if (m_tet[v] >= 0 && smallest(m_weights[v]) >= -tol.inside)
+            if (m_tet[v] >= 0 && smallest(weightsOf(v)) >= -tol.inside)
                 break;
             // Slightly outside the coarse mesh (its boundary lies inside the curved surface):
             // the tet found in the vertex's own cell is near enough.
-            if (m_tet[v] >= 0 && smallest(m_weights[v]) >= -tol.nearOutside)
+            if (m_tet[v] >= 0 && smallest(weightsOf(v)) >= -tol.nearOutside)
                 break;
             if (m_tet[v] >= 0 && r >= 2 * cell)
                 break;  // outside the mesh: the nearest tet found is kept
@@ -84,24 +155,24 @@ Status SurfaceBinding::bind(const TetMesh& mesh, const TriangleSurface& surface,
             std::iota(all.begin(), all.end(), 0);
             bindVertex(mesh, v, p, all);
         }
-        if (smallest(m_weights[v]) < -tol.inside)
+        if (smallest(weightsOf(v)) < -tol.inside)
             ++m_outside;
     }
     m_verticesOfTet.assign(mesh.tetCount(), {});
     for (int v = 0; v < n; ++v)
         m_verticesOfTet[m_tet[v]].push_back(v);
-    sortByTet();
     return Status::success();
 }
 
 void SurfaceBinding::compact(const std::vector<int>& kept, const std::vector<int>& newTetOf, int tetCount,
                              const std::unordered_map<int, std::pair<int, std::array<double, 4>>>& rebound) {
     std::vector<int> tet(kept.size());
-    std::vector<std::array<double, 4>> weights(kept.size());
+    std::vector<std::array<double, 3>> weights(kept.size());
     for (std::size_t i = 0; i < kept.size(); ++i) {
         if (auto it = rebound.find(kept[i]); it != rebound.end()) {
             tet[i] = it->second.first;
-            weights[i] = it->second.second;
+            const auto& w = it->second.second;
+            weights[i] = {w[1], w[2], w[3]};
             continue;
         }
         tet[i] = newTetOf[m_tet[kept[i]]];
@@ -113,11 +184,9 @@ void SurfaceBinding::compact(const std::vector<int>& kept, const std::vector<int
     m_outside = 0;
     for (int v = 0; v < static_cast<int>(m_tet.size()); ++v) {
         m_verticesOfTet[m_tet[v]].push_back(v);
-        const auto& w = m_weights[v];
-        if (std::min({w[0], w[1], w[2], w[3]}) < -m_tolerances.inside)
+        if (isOutside(v))
             ++m_outside;
     }
-    sortByTet();
 }
 
 const std::vector<int>& SurfaceBinding::verticesOf(int t) const {
@@ -129,15 +198,52 @@ void SurfaceBinding::rebindAfterRemesh(const TetMesh& mesh, const std::vector<in
                                        const std::vector<Vec3>& positions,
                                        const std::vector<std::vector<int>>& candidates,
                                        const std::vector<int>& newTet) {
-    if (!newTet.empty()) {
-        for (int v = 0; v < vertexCount(); ++v)
-            m_tet[v] = newTet[m_tet[v]];
-    } else {
-        for (int v : vertices) {
-            auto& list = m_verticesOfTet[m_tet[v]];
-            list.erase(std::remove(list.begin(), list.end(), v), list.end());
-        }
+    SparseRenumbering tets;
+    tets.oldCount = static_cast<int>(newTet.empty() ? m_verticesOfTet.size() : newTet.size());
+    tets.newCount = mesh.tetCount();
+    for (int t = 0; t < static_cast<int>(newTet.size()); ++t)
+        if (newTet[t] != t)
+            tets.changed.emplace_back(t, newTet[t]);
+    rebindAfterRemesh(mesh, vertices, positions, candidates, tets);
+}
+
+void SurfaceBinding::rebindAfterRemesh(const TetMesh& mesh, const std::vector<int>& vertices,
+                                       const std::vector<Vec3>& positions,
+                                       const std::vector<std::vector<int>>& candidates,
+                                       const SparseRenumbering& tets) {
+    // 1. The recorded vertices leave their tets' lists (old indices), and the outside count.
+    for (int v : vertices) {
+        auto& list = m_verticesOfTet[m_tet[v]];
+        list.erase(std::remove(list.begin(), list.end(), v), list.end());
+        if (isOutside(v))
+            --m_outside;
     }
+    // 2. The lists of renumbered tets move to their new index, with their vertices; removed
+    // tets' lists are empty now (only recorded vertices may be bound to them).
+    if (!tets.empty()) {
+        std::vector<std::vector<int>> moved(tets.changed.size());
+        for (std::size_t k = 0; k < tets.changed.size(); ++k) {
+            const int from = tets.changed[k].first;
+            if (from < static_cast<int>(m_verticesOfTet.size())) {
+                moved[k] = std::move(m_verticesOfTet[from]);
+                m_verticesOfTet[from].clear();
+            }
+        }
+        if (static_cast<int>(m_verticesOfTet.size()) < mesh.tetCount())
+            m_verticesOfTet.resize(mesh.tetCount());
+        for (std::size_t k = 0; k < tets.changed.size(); ++k) {
+            const int to = tets.changed[k].second;
+            if (to < 0)
+                continue;
+            for (int v : moved[k])
+                m_tet[v] = to;
+            m_verticesOfTet[to] = std::move(moved[k]);
+        }
+        for (int v : vertices)
+            m_tet[v] = tets(m_tet[v]);
+    }
+    m_verticesOfTet.resize(mesh.tetCount());
+    // 3. The recorded vertices are bound again among their candidates.
     for (std::size_t i = 0; i < vertices.size(); ++i) {
         const int v = vertices[i];
         const int old = m_tet[v];
@@ -145,185 +251,225 @@ void SurfaceBinding::rebindAfterRemesh(const TetMesh& mesh, const std::vector<in
         bindVertex(mesh, v, positions[i], candidates[i]);
         if (m_tet[v] < 0) {  // no candidate left (cannot happen for a node that still has tets)
             m_tet[v] = old >= 0 ? old : 0;
-            m_weights[v] = barycentricInTet(mesh, m_tet[v], positions[i]);
+            setWeights(v, barycentricInTet(mesh, m_tet[v], positions[i]));
         }
-    }
-    if (!newTet.empty()) {
-        m_verticesOfTet.assign(mesh.tetCount(), {});
-        for (int v = 0; v < vertexCount(); ++v)
-            m_verticesOfTet[m_tet[v]].push_back(v);
-        sortByTet();
-    } else {
-        if (static_cast<int>(m_verticesOfTet.size()) < mesh.tetCount())
-            m_verticesOfTet.resize(mesh.tetCount());
-        for (int v : vertices)
-            m_verticesOfTet[m_tet[v]].push_back(v);
-    }
-    m_outside = 0;
-    for (const auto& w : m_weights)
-        if (std::min({w[0], w[1], w[2], w[3]}) < -m_tolerances.inside)
+        m_verticesOfTet[m_tet[v]].push_back(v);
+        if (isOutside(v))
             ++m_outside;
-}
-
-void SurfaceBinding::sortByTet() {
-    m_order.resize(m_tet.size());
-    std::iota(m_order.begin(), m_order.end(), 0);
-    std::stable_sort(m_order.begin(), m_order.end(), [&](int a, int b) { return m_tet[a] < m_tet[b]; });
-}
-
-void SurfaceBinding::apply(const TetMesh& mesh, std::vector<Vec3>& out) const {
-    out.resize(m_tet.size());
-    for (int v : m_order) {
-        const Tet& q = mesh.tet(m_tet[v]);
-        const auto& w = m_weights[v];
-        out[v] = w[0] * mesh.pos(q[0]) + w[1] * mesh.pos(q[1]) + w[2] * mesh.pos(q[2]) + w[3] * mesh.pos(q[3]);
     }
 }
 
 namespace {
 
-/// Side of a tet relative to the sweep: from the cut where it made the tet; else from its
-/// nodes off the cut surface (a tet touching the cut at nodes that stayed off the sweep may
-/// have its centre across it); else from its centre.
-int tetSideOf(const TetMesh& mesh, const CutChanges& changes, const std::unordered_set<int>& onCut,
-              const SweepSurface& sweep, int t) {
-    auto it = changes.tetSide.find(t);
-    if (it != changes.tetSide.end())
-        return it->second;
-    Vec3 centre = Vec3::Zero();
-    for (int node : mesh.tet(t)) {
-        if (!onCut.count(node)) {
-            const int s = sweep.sideOf(mesh.pos(node));
-            if (s != 0)
-                return s;
-        }
-        centre += mesh.pos(node) / 4.0;
-    }
-    return sweep.sideOf(centre);
-}
+/// Vertices per thread below which apply() stays on fewer threads (a fork-join costs
+/// microseconds; this many vertices take about as long).
+constexpr std::int64_t kApplyGrain = 16384;
 
-/// Tets sharing a node with any of `tets`, including the stars of separated copies.
-std::vector<int> ringOf(const TetMesh& mesh, const CutChanges& changes, const std::vector<int>& tets) {
-    std::vector<int> ring;
-    std::unordered_set<int> nodes;
-    for (int t : tets)
-        for (int node : mesh.tet(t))
-            nodes.insert(node);
-    for (const auto& [orig, copy] : changes.duplicatedNodes)
-        if (nodes.count(orig) || nodes.count(copy)) {
-            nodes.insert(orig);
-            nodes.insert(copy);
+/// apply() on vertices [begin, end). The nodes of consecutive vertices' tets are mostly the same
+/// and stay in cache; reading them again for every vertex was faster than testing whether the
+/// tet changed (a branch taken every four vertices or so, mispredicted).
+void applyRange(const TetMesh& mesh, const int* tets, const std::array<double, 3>* weights, int begin, int end,
+                Vec3* out, float* render) {
+    const Vec3* P = mesh.positions().data();
+    const Tet* T = mesh.tets().data();
+    for (int v = begin; v < end; ++v) {
+        const Tet& q = T[tets[v]];
+        const double w1 = weights[v][0], w2 = weights[v][1], w3 = weights[v][2];
+        const double w0 = 1.0 - w1 - w2 - w3;
+        const Vec3 &p0 = P[q[0]], &p1 = P[q[1]], &p2 = P[q[2]], &p3 = P[q[3]];
+        Vec3& x = out[v];
+        x.x() = w0 * p0.x() + w1 * p1.x() + w2 * p2.x() + w3 * p3.x();
+        x.y() = w0 * p0.y() + w1 * p1.y() + w2 * p2.y() + w3 * p3.y();
+        x.z() = w0 * p0.z() + w1 * p1.z() + w2 * p2.z() + w3 * p3.z();
+        if (render) {
+            render[3 * v] = static_cast<float>(x.x());
+            render[3 * v + 1] = static_cast<float>(x.y());
+            render[3 * v + 2] = static_cast<float>(x.z());
         }
-    for (int node : nodes)
-        ring.insert(ring.end(), mesh.nodeTets(node).begin(), mesh.nodeTets(node).end());
-    std::sort(ring.begin(), ring.end());
-    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-    return ring;
+    }
 }
 
 } // namespace
 
+void SurfaceBinding::apply(const TetMesh& mesh, std::vector<Vec3>& out, std::vector<float>* render,
+                           int threads) const {
+    const int n = vertexCount();
+    out.resize(n);
+    if (render)
+        render->resize(3 * static_cast<std::size_t>(n));
+    const int used = threadsFor(resolveThreadCount(threads), n, kApplyGrain);
+    Vec3* o = out.data();
+    float* r = render ? render->data() : nullptr;
+    parallelRun(used, [&](int t) {
+        applyRange(mesh, m_tet.data(), m_weights.data(), static_cast<int>(chunkBegin(n, used, t)),
+                   static_cast<int>(chunkBegin(n, used, t + 1)), o, r);
+    });
+}
+
+void SurfaceBinding::collectPieces(const CutChanges& changes) {
+    m_pieceSlot.clear();
+    m_pieceKeys.clear();
+    const auto listOf = [&](int t) -> std::vector<int>& {
+        if (m_pieceSlot.insert(t, static_cast<int>(m_pieceKeys.size()))) {
+            if (m_pieces.size() <= m_pieceKeys.size())
+                m_pieces.emplace_back();
+            m_pieces[m_pieceKeys.size()].clear();
+            m_pieceKeys.push_back(t);
+        }
+        return m_pieces[m_pieceSlot.get(t)];
+    };
+    for (int t : changes.modifiedTets)
+        listOf(t).push_back(t);
+    for (std::size_t k = 0; k < changes.parentOfNewTet.size(); ++k)
+        listOf(changes.parentOfNewTet[k]).push_back(changes.firstNewTet + static_cast<int>(k));
+}
+
+std::span<const int> SurfaceBinding::piecesOf(int t) const {
+    if (t >= 0 && m_pieceSlot.has(t))
+        return m_pieces[m_pieceSlot.get(t)];
+    return {};
+}
+
 void SurfaceBinding::bindNewVertices(const TetMesh& mesh, const std::vector<Vec3>& positions, int first,
                                      const std::vector<std::array<int, 2>>& sourceEdges, const std::vector<int>& sides,
-                                     const CutChanges& changes, const SweepSurface& sweep) {
-    const std::unordered_set<int> onCut(changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end());
+                                     const CutChanges& changes, const SweepSurface& sweep, bool afterRebind) {
+    if (!afterRebind)
+        m_sides.begin(mesh, changes, sweep);
+    forgetFrames();
     const int total = static_cast<int>(positions.size());
     m_tet.resize(total, -1);
-    m_weights.resize(total, {1, 0, 0, 0});
+    m_weights.resize(total, {0, 0, 0});
     if (static_cast<int>(m_verticesOfTet.size()) < mesh.tetCount())
         m_verticesOfTet.resize(mesh.tetCount());
+    std::array<int, 2> ringOf{-1, -1};  // the tets m_ring is the ring of
     for (int v = first; v < total; ++v) {
         const auto& edge = sourceEdges[v - first];
-        std::vector<int> near = ringOf(mesh, changes, {m_tet[edge[0]], m_tet[edge[1]]});
+        // Tets near the ones the source edge's ends are bound to (the same for the copies and
+        // the other points split from one edge: computed once for consecutive ones).
+        const std::array<int, 2> ends{m_tet[edge[0]], m_tet[edge[1]]};
+        if (ends != ringOf) {
+            m_sides.ring(ends, m_ring);
+            ringOf = ends;
+            m_ringSides.clear();
+            for (int t : m_ring)
+                m_ringSides.push_back(static_cast<std::int8_t>(m_sides.tetSide(t)));
+        }
         const int side = sides[v - first];
-        std::vector<int> kept;
-        for (int t : near)
-            if (side == 0 || tetSideOf(mesh, changes, onCut, sweep, t) == side)
-                kept.push_back(t);
-        bindVertex(mesh, v, positions[v], kept.empty() ? near : kept);
+        m_kept.clear();
+        for (std::size_t k = 0; k < m_ring.size(); ++k)
+            if (side == 0 || m_ringSides[k] == side)
+                m_kept.push_back(m_ring[k]);
+        // The tets of the edge's ends and their pieces are likely to contain the vertex.
+        m_likely.clear();
+        for (int end : ends) {
+            m_likely.push_back(end);
+            const std::span<const int> pieces = piecesOf(end);
+            m_likely.insert(m_likely.end(), pieces.begin(), pieces.end());
+        }
+        std::erase_if(m_likely, [&](int t) {
+            return !m_sides.inRing(t) || (!m_kept.empty() && side != 0 && m_sides.tetSide(t) != side);
+        });
+        bindVertexInSet(mesh, v, positions[v], m_kept.empty() ? m_ring : m_kept, m_likely);
         m_verticesOfTet[m_tet[v]].push_back(v);
+        if (isOutside(v))
+            ++m_outside;
     }
-    m_order.resize(total);
-    for (int v = first; v < total; ++v)
-        m_order[v] = v;
+}
+
+void SurfaceBinding::markRecomputeTets(const TetMesh& mesh, const CutChanges& changes, int oldTets) {
+    m_recompute.clear();
+    m_recomputeMark.clear();
+    m_nodeMark.clear();
+    const auto markNode = [&](int n) {
+        if (!m_nodeMark.insert(n))
+            return;
+        for (int t : mesh.nodeTets(n))
+            if (t < oldTets && m_recomputeMark.insert(t))
+                m_recompute.push_back(t);
+    };
+    for (int n : changes.touchedNodes)
+        markNode(n);
+    // (The neighbours of a node, and the node, are the nodes of its tets.)
+    for (int n : changes.cutSurfaceNodes)
+        for (int t : mesh.nodeTets(n))
+            for (int u : mesh.tet(t))
+                markNode(u);
+}
+
+void SurfaceBinding::rebindVertex(const TetMesh& mesh, int v, const Vec3& p, const SweepSurface& sweep) {
+    const int old = m_tet[v];
+    if (isOutside(v))
+        --m_outside;
+    const std::span<const int> pieces = piecesOf(old);
+    const std::span<const int> candidates = pieces.empty() ? std::span<const int>(&old, 1) : pieces;
+    // Keep the tets on the vertex's side of the sweep; if none (a vertex just outside the
+    // coarse mesh, nearest to a tet across the cut), look one ring further.
+    int side = 2;  // not computed yet: only needed where a candidate lies on one side
+    const auto keepSameSide = [&](std::span<const int> tets) {
+        m_kept.clear();
+        for (int t : tets) {
+            const int s = m_sides.tetSide(t);
+            if (s != 0 && side == 2)
+                side = sweep.sideOf(p);
+            if (side == 0 || s == 0 || s == side)
+                m_kept.push_back(t);
+        }
+    };
+    keepSameSide(candidates);
+    m_tet[v] = -1;
+    if (!m_kept.empty()) {
+        bindVertex(mesh, v, p, m_kept);
+    } else {
+        m_sides.ring(candidates, m_ring);
+        keepSameSide(m_ring);
+        if (!m_kept.empty())
+            bindVertexInSet(mesh, v, p, m_kept, {});
+        else
+            bindVertex(mesh, v, p, candidates);
+    }
+    if (m_tet[v] < 0) {
+        m_tet[v] = old;
+        setWeights(v, barycentricInTet(mesh, old, p));
+    }
+    if (isOutside(v))
+        ++m_outside;
 }
 
 int SurfaceBinding::rebind(const TetMesh& mesh, const CutChanges& changes, const std::vector<Vec3>& positions,
                            const SweepSurface& sweep) {
+    m_sides.begin(mesh, changes, sweep);
+    forgetFrames();
+    const int oldTets = static_cast<int>(m_verticesOfTet.size());
     // Pieces of every changed tet: itself (its slot now holds a piece) and its appended pieces.
-    std::unordered_map<int, std::vector<int>> pieces;
-    for (int t : changes.modifiedTets)
-        pieces[t].push_back(t);
-    for (std::size_t k = 0; k < changes.parentOfNewTet.size(); ++k)
-        pieces[changes.parentOfNewTet[k]].push_back(changes.firstNewTet + static_cast<int>(k));
-    // Tets around moved nodes only need new coordinates.
+    collectPieces(changes);
     // Tets around moved nodes need new coordinates, and tets around the cut surface may now
     // lie on the other side of the sweep from vertices bound to them.
     // (Two rings: where cut nodes stay off the sweep, the mesh's cut deviates from the sweep
     // by up to d, and a vertex next to the sweep may sit in a tet a ring away, across it.)
-    std::unordered_map<int, char> recompute;
-    std::vector<int> ring = changes.touchedNodes;
-    ring.insert(ring.end(), changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end());
-    for (int n : changes.cutSurfaceNodes)
-        for (int u : mesh.nodeNeighbours(n))
-            ring.push_back(u);
-    std::sort(ring.begin(), ring.end());
-    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-    for (int node : ring)
-        for (int t : mesh.nodeTets(node))
-            if (t < static_cast<int>(m_verticesOfTet.size()))
-                recompute.emplace(t, 1);
-
+    markRecomputeTets(mesh, changes, oldTets);
     if (static_cast<int>(m_verticesOfTet.size()) < mesh.tetCount())
         m_verticesOfTet.resize(mesh.tetCount());
-    std::vector<int> affected;
-    for (const auto& [t, list] : pieces)
-        for (int v : m_verticesOfTet[t])
-            affected.push_back(v);
-    for (const auto& [t, flag] : recompute)
-        if (!pieces.count(t))
-            for (int v : m_verticesOfTet[t])
-                affected.push_back(v);
-    std::sort(affected.begin(), affected.end());
-    affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
 
-    const std::unordered_set<int> onCut(changes.cutSurfaceNodes.begin(), changes.cutSurfaceNodes.end());
-    const auto sideOfTet = [&](int t) { return tetSideOf(mesh, changes, onCut, sweep, t); };
-    for (int v : affected) {
-        const int old = m_tet[v];
-        auto it = pieces.find(old);
-        std::vector<int> candidates = it == pieces.end() ? std::vector<int>{old} : it->second;
-        // Keep the tets on the vertex's side of the sweep; if none (a vertex just outside the
-        // coarse mesh, nearest to a tet across the cut), look one ring further.
-        const int side = sweep.sideOf(positions[v]);
-        const auto sameSide = [&](const std::vector<int>& tets) {
-            std::vector<int> kept;
-            for (int t : tets)
-                if (side == 0 || sideOfTet(t) == 0 || sideOfTet(t) == side)
-                    kept.push_back(t);
-            return kept;
-        };
-        std::vector<int> kept = sameSide(candidates);
-        if (kept.empty())
-            kept = sameSide(ringOf(mesh, changes, candidates));
-        if (!kept.empty())
-            candidates = kept;
-        m_tet[v] = -1;
-        bindVertex(mesh, v, positions[v], candidates);
-        if (m_tet[v] < 0) {
-            m_tet[v] = old;
-            m_weights[v] = barycentricInTet(mesh, old, positions[v]);
-        }
-    }
-    // Rebuild the per-tet lists for what changed, and the streaming order.
-    for (const auto& [t, list] : pieces)
-        for (int piece : list)
+    // The vertices bound to any of them (each once: a vertex is in one tet's list). Each is
+    // re-bound on its own, so their order only orders the rebuilt lists.
+    m_affected.clear();
+    for (int t : m_pieceKeys)
+        m_affected.insert(m_affected.end(), m_verticesOfTet[t].begin(), m_verticesOfTet[t].end());
+    for (int t : m_recompute)
+        if (piecesOf(t).empty())
+            m_affected.insert(m_affected.end(), m_verticesOfTet[t].begin(), m_verticesOfTet[t].end());
+    for (int v : m_affected)
+        rebindVertex(mesh, v, positions[v], sweep);
+
+    // Rebuild the per-tet lists for what changed.
+    for (std::size_t k = 0; k < m_pieceKeys.size(); ++k)
+        for (int piece : m_pieces[k])
             m_verticesOfTet[piece].clear();
-    for (const auto& [t, flag] : recompute)
+    for (int t : m_recompute)
         m_verticesOfTet[t].clear();
-    for (int v : affected)
+    for (int v : m_affected)
         m_verticesOfTet[m_tet[v]].push_back(v);
-    return static_cast<int>(affected.size());
+    return static_cast<int>(m_affected.size());
 }
 
 } // namespace resect

@@ -1,14 +1,18 @@
 #include "core/embed/cut_surface.h"
 
+#include "core/embed/flat_marks.h"
+#include "core/embed/surface_index.h"
 #include "core/embed/triangulate_cut.h"
 #include "core/mesh/predicates.h"
 #include "core/mesh/union_find.h"
 #include "core/sweep/intersect_segment.h"
 
 #include <algorithm>
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <numeric>
+#include <span>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -57,6 +61,24 @@ struct EdgeSplit {
 struct BoundaryPoint {
     int vertex = -1;
     std::vector<int> sweepTriangles;  ///< the sweep triangles whose closed triangle holds it
+};
+
+/// The edges of a surface triangle that each point on its boundary lies on (bit e: edge
+/// q[e] -> q[e + 1]): a short list, searched linearly.
+struct EdgeBits {
+    std::vector<std::pair<int, int>> bits;  ///< (vertex, bits)
+    int& of(int v) {
+        for (auto& [u, b] : bits)
+            if (u == v)
+                return b;
+        return bits.emplace_back(v, 0).second;
+    }
+    const int* find(int v) const {
+        for (const auto& [u, b] : bits)
+            if (u == v)
+                return &b;
+        return nullptr;
+    }
 };
 
 /// A point where a sweep edge pierces a surface triangle's interior, found while tracing.
@@ -209,19 +231,55 @@ struct SurfaceEdit {
     }
 };
 
+} // namespace
+
+/// The cut's scratch tables (flat_marks.h), cleared at the start of every cut.
+struct SurfaceCutWorkspace::Tables {
+    IndexMarks onSweep, cutVertices, shared, mate, mateOf, side, colour, incident, next, visited;
+    EdgeTable tested, splits, cutEdges, segmentTriangle, edgeSide, halfEdges, surfaceEdges, byEdge, capEdges;
+    void clear(int vertices, int triangles) {
+        for (IndexMarks* m : {&onSweep, &cutVertices, &shared, &mate, &mateOf, &incident, &next, &visited}) {
+            m->clear();
+            m->grow(vertices);
+        }
+        for (IndexMarks* m : {&side, &colour}) {
+            m->clear();
+            m->grow(triangles);
+        }
+        for (EdgeTable* t : {&tested, &splits, &cutEdges, &segmentTriangle, &edgeSide, &halfEdges, &surfaceEdges, &byEdge,
+                             &capEdges})
+            t->clear();
+    }
+    /// Room for a cut near `candidates` triangles (one allocation each on a cold workspace).
+    void reserve(int candidates) {
+        for (EdgeTable* t : {&tested, &cutEdges, &segmentTriangle, &edgeSide, &halfEdges, &surfaceEdges, &byEdge})
+            t->reserve(2 * candidates);
+    }
+};
+
+SurfaceCutWorkspace::SurfaceCutWorkspace() : m_tables(std::make_unique<Tables>()) {}
+SurfaceCutWorkspace::~SurfaceCutWorkspace() = default;
+SurfaceCutWorkspace::SurfaceCutWorkspace(const SurfaceCutWorkspace&) : m_tables(std::make_unique<Tables>()) {}
+SurfaceCutWorkspace& SurfaceCutWorkspace::operator=(const SurfaceCutWorkspace&) { return *this; }
+
+namespace {
+
 /// The surface cut of section 5, one step per member function: candidates, edge splits,
 /// triangle splits (with the exact course of the cut inside each triangle), separation of the
 /// sides, boundary tracing, caps.
 class SurfaceCutter {
 public:
-    SurfaceCutter(TriangleSurface& surface, std::vector<Vec3>* rest, const SweepSurface& sweep, SurfaceCut& out)
+    SurfaceCutter(TriangleSurface& surface, std::vector<Vec3>* rest, const SweepSurface& sweep, SurfaceCut& out,
+                  SurfaceIndex* index, SurfaceCutWorkspace::Tables& tables)
         : m_s(surface), m_rest(rest), m_sweep(sweep), m_out(out), m_edit(surface, rest),
-          m_first(surface.vertexCount()) {}
+          m_first(surface.vertexCount()), m_index(index), m_t(tables) {
+        m_t.clear(surface.vertexCount(), surface.triangleCount());
+    }
 
     Status run() {
         findCandidates();
         findEdgeSplits();
-        if (m_splits.empty())
+        if (m_splitRanges.empty())
             return Status::success();  // nothing crosses: the surface is unchanged
         buildSweepAdjacency();
         prepareArrays();
@@ -238,16 +296,28 @@ public:
             return s;
         finishCounts();
         m_edit.committed = true;
+        if (m_index) {
+            std::vector<int> replaced;
+            for (const auto& [t, old] : m_edit.replaced)
+                replaced.push_back(t);
+            m_index->followCut(m_s, m_first, m_edit.triangles, replaced);
+        }
         return Status::success();
     }
 
     // --- step 1: triangles near the sweep ---
 
     /// Triangles that can touch the sweep: not all three corners strictly beyond one face of
-    /// the sweep's bounding box (exact comparisons, so no crossing is missed). One pass over
-    /// the index array, a few nanoseconds a triangle; everything after it costs in proportion
-    /// to the triangles the sweep touches.
+    /// the sweep's bounding box (exact comparisons, so no crossing is missed). Through the
+    /// SurfaceIndex when there is one (the blocks near the sweep), else one pass over the index
+    /// array, a few nanoseconds a triangle; everything after it costs in proportion to the
+    /// triangles the sweep touches.
     void findCandidates() {
+        if (m_index) {
+            m_index->candidates(m_s, m_sweep.bounds(), m_candidates);
+            m_out.candidateTriangles = static_cast<int>(m_candidates.size());
+            return;
+        }
         const Vec3 lo = m_sweep.bounds().min(), hi = m_sweep.bounds().max();
         std::vector<std::uint8_t> code(m_s.positions.size());
         for (std::size_t v = 0; v < code.size(); ++v) {
@@ -273,11 +343,12 @@ public:
     /// (a cut through an earlier cut vertex) would leave pieces too small to tell apart.
     void findEdgeSplits() {
         struct EdgeHits {
-            int a, b;  ///< the edge, from -> to in canonical order
-            std::vector<SegmentHit> hits;
+            int a, b;           ///< the edge, from -> to in canonical order
+            int first, count;   ///< its hits in `hits`
         };
         std::vector<EdgeHits> edges;
-        std::unordered_set<std::uint64_t> tested;
+        std::vector<SegmentHit> hits;
+        m_t.reserve(static_cast<int>(m_candidates.size()));
         SegmentQuery query;
         std::vector<int> scratch;
         const auto& P = m_s.positions;
@@ -285,31 +356,34 @@ public:
             const Tri& q = m_s.triangles[t];
             for (int e = 0; e < 3; ++e) {
                 const int a = q[e], b = q[(e + 1) % 3];
-                if (!tested.insert(undirected(a, b)).second)
+                if (!m_t.tested.insert(undirected(a, b), 1).second)
                     continue;
                 const bool forward = precedes(P[a], a, P[b], b);
                 const int from = forward ? a : b, to = forward ? b : a;
                 intersectSegment(m_sweep, P[from], P[to], query, scratch);
                 if (query.pOnSweep)
-                    m_onSweep.insert(from);
+                    m_t.onSweep.insert(from);
                 if (query.qOnSweep)
-                    m_onSweep.insert(to);
+                    m_t.onSweep.insert(to);
                 if (query.hits.empty())
                     continue;
                 for (const SegmentHit& h : query.hits) {
                     // A crossing all but at an end: that end is on the cut.
                     const int end = h.t < kSnapFraction ? from : h.t > 1 - kSnapFraction ? to : -1;
-                    if (end >= 0 && m_onSweep.insert(end).second)
+                    if (end >= 0 && m_t.onSweep.insert(end))
                         m_holding[end] = trianglesOfFeature(h.triangle, h.feature);
                 }
-                edges.push_back({from, to, query.hits});
+                edges.push_back({from, to, static_cast<int>(hits.size()), static_cast<int>(query.hits.size())});
+                hits.insert(hits.end(), query.hits.begin(), query.hits.end());
             }
         }
+        std::vector<EdgeSplit> splits;
         for (const EdgeHits& edge : edges) {
             const int from = edge.a, to = edge.b;
-            const bool fromOn = m_onSweep.count(from) > 0, toOn = m_onSweep.count(to) > 0;
-            std::vector<EdgeSplit> splits;
-            for (const SegmentHit& h : edge.hits) {
+            const bool fromOn = m_t.onSweep.has(from), toOn = m_t.onSweep.has(to);
+            splits.clear();
+            for (int k = edge.first; k < edge.first + edge.count; ++k) {
+                const SegmentHit& h = hits[k];
                 if ((fromOn && h.t < kSnapFraction) || (toOn && h.t > 1 - kSnapFraction))
                     continue;
                 EdgeSplit s;
@@ -330,15 +404,20 @@ public:
                 splits.push_back(s);
             }
             std::sort(splits.begin(), splits.end(), [](const EdgeSplit& x, const EdgeSplit& y) { return x.t < y.t; });
-            if (!splits.empty())
-                m_splits.emplace(undirected(from, to), std::move(splits));
+            if (!splits.empty() && m_t.splits.insert(undirected(from, to), static_cast<int>(m_splitRanges.size())).second) {
+                m_splitRanges.push_back({static_cast<int>(m_splitStore.size()), static_cast<int>(splits.size())});
+                m_splitStore.insert(m_splitStore.end(), splits.begin(), splits.end());
+            }
         }
     }
 
     /// The crossings of edge (a, b), ordered from low to high (empty if none).
-    std::vector<EdgeSplit>* splitsOf(int a, int b) {
-        auto it = m_splits.find(undirected(a, b));
-        return it == m_splits.end() ? nullptr : &it->second;
+    std::span<EdgeSplit> splitsOf(int a, int b) {
+        const int* range = m_t.splits.find(undirected(a, b));
+        if (!range)
+            return {};
+        const auto [first, count] = m_splitRanges[*range];
+        return std::span<EdgeSplit>(m_splitStore.data() + first, count);
     }
 
     // --- sweep topology, for tracing the cut inside a triangle ---
@@ -409,8 +488,12 @@ public:
 
     /// Appends a vertex (position, texture coordinate and rest position interpolated with the
     /// weights of `from`); returns its index.
-    int addVertex(const Vec3& p, const Vec2& cutUv, const std::vector<std::pair<int, double>>& from,
+    using Weights = std::span<const std::pair<int, double>>;
+    int addVertex(const Vec3& p, const Vec2& cutUv, std::initializer_list<std::pair<int, double>> from,
                   const std::array<int, 2>& source) {
+        return addVertex(p, cutUv, Weights(from.begin(), from.size()), source);
+    }
+    int addVertex(const Vec3& p, const Vec2& cutUv, Weights from, const std::array<int, 2>& source) {
         m_s.positions.push_back(p);
         if (!m_s.uvs.empty()) {
             Vec2 uv = Vec2::Zero();
@@ -427,16 +510,24 @@ public:
         m_s.cutUvs.push_back(cutUv);
         m_sourceEdge.push_back(source);
         m_origin.push_back(m_s.vertexCount() - 1);
+        noteNewVertex();
         return m_s.vertexCount() - 1;
     }
+
+    /// Per-vertex scratch for a vertex just appended.
+    void noteNewVertex() {
+        m_innerSide.push_back(kNotInner);
+        m_copySide.push_back(0);
+    }
+    static constexpr int kNotInner = 2;
+    bool isInner(int v) const { return v >= m_first && m_innerSide[v - m_first] != kNotInner; }
 
     /// One split point per crossed edge, numbered in the order of the triangles (reproducible).
     void addSplitVertices() {
         for (int t : m_candidates) {
             const Tri q = m_s.triangles[t];
             for (int e = 0; e < 3; ++e)
-                if (std::vector<EdgeSplit>* list = splitsOf(q[e], q[(e + 1) % 3]))
-                    for (EdgeSplit& s : *list)
+                for (EdgeSplit& s : splitsOf(q[e], q[(e + 1) % 3]))
                         if (s.vertex < 0)
                             s.vertex = addVertex(s.point, s.uv, {{s.low, 1 - s.t}, {s.high, s.t}}, {s.low, s.high});
         }
@@ -452,18 +543,18 @@ public:
         for (int e = 0; e < 3; ++e) {
             const int a = q[e];
             cycle.push_back(a);
-            if (m_onSweep.count(a)) {
+            if (m_t.onSweep.has(a)) {
                 auto it = m_holding.find(a);
                 if (it == m_holding.end())
                     it = m_holding.emplace(a, trianglesHolding(m_s.positions[a])).first;
                 if (!it->second.empty())
                     points.push_back({a, it->second});
             }
-            if (const std::vector<EdgeSplit>* list = splitsOf(a, q[(e + 1) % 3])) {
+            if (const std::span<EdgeSplit> list = splitsOf(a, q[(e + 1) % 3]); !list.empty()) {
                 // Along the edge from a: increasing t if a is its low end.
-                const bool fromLow = a == list->front().low;
-                for (std::size_t k = 0; k < list->size(); ++k) {
-                    const EdgeSplit& s = (*list)[fromLow ? k : list->size() - 1 - k];
+                const bool fromLow = a == list.front().low;
+                for (std::size_t k = 0; k < list.size(); ++k) {
+                    const EdgeSplit& s = list[fromLow ? k : list.size() - 1 - k];
                     cycle.push_back(s.vertex);
                     points.push_back({s.vertex, trianglesOfFeature(s.sweepTriangle, s.feature)});
                 }
@@ -570,8 +661,8 @@ public:
     int cornerSide(const Tri& q, int x) {
         for (int e = 0; e < 3; ++e)
             if (q[e] == x || q[(e + 1) % 3] == x)
-                if (const std::vector<EdgeSplit>* list = splitsOf(q[e], q[(e + 1) % 3]))
-                    return (x == list->front().low ? list->front() : list->back()).sideOf(x);  // the nearest crossing
+                if (const std::span<EdgeSplit> list = splitsOf(q[e], q[(e + 1) % 3]); !list.empty())
+                    return (x == list.front().low ? list.front() : list.back()).sideOf(x);  // the nearest crossing
         return m_sweep.sideOf(m_s.positions[x]);
     }
 
@@ -603,19 +694,19 @@ public:
             return s;
         for (const auto& line : polylines)
             for (std::size_t k = 0; k < line.size(); ++k) {
-                m_cutVertices.insert(line[k]);
+                m_t.cutVertices.insert(line[k]);
                 if (k + 1 < line.size())
-                    m_cutEdges.insert(undirected(line[k], line[k + 1]));
+                    m_t.cutEdges.insert(undirected(line[k], line[k + 1]), 1);
             }
         // The edges of q each boundary point lies on (bit e: edge q[e] -> q[e + 1]).
-        std::unordered_map<int, int> edgesOf;
+        EdgeBits edgesOf;
         for (std::size_t k = 0, e = 2; k < cycle.size(); ++k) {
             const int v = cycle[k];
             if (v == q[(e + 1) % 3]) {
                 e = (e + 1) % 3;
-                edgesOf[v] = (1 << e) | (1 << (e + 2) % 3);
+                edgesOf.of(v) = (1 << e) | (1 << (e + 2) % 3);
             } else {
-                edgesOf[v] |= 1 << e;
+                edgesOf.of(v) |= 1 << e;
             }
         }
         return emitPieces(t, q, polygons, pieceSides(q, polygons), edgesOf);
@@ -653,7 +744,7 @@ public:
                 }
             line.push_back(points[b].vertex);
             for (std::size_t k = 0; k + 1 < line.size(); ++k)
-                m_segmentTriangle[undirected(line[k], line[k + 1])] = lineTriangles[k];
+                m_t.segmentTriangle.set(undirected(line[k], line[k + 1]), lineTriangles[k]);
             polylines.push_back(std::move(line));
         }
         // Two boundary points that could not be traced to each other (a degenerate meeting of
@@ -665,7 +756,7 @@ public:
                                  trace(T, points, 1, none, b, path, visited) == TraceEnd::Border;
             if (!partial) {
                 polylines.push_back({points[0].vertex, points[1].vertex});
-                m_segmentTriangle[undirected(points[0].vertex, points[1].vertex)] = points[0].sweepTriangles.front();
+                m_t.segmentTriangle.set(undirected(points[0].vertex, points[1].vertex), points[0].sweepTriangles.front());
             }
         }
         return polylines;
@@ -727,12 +818,12 @@ public:
             const auto& poly = polygons[k];
             for (std::size_t i = 0; i < poly.size() && side[k] == 0; ++i) {
                 const int a = poly[i], b = poly[(i + 1) % poly.size()];
-                const auto it = m_segmentTriangle.find(undirected(a, b));
-                if (a != b && it != m_segmentTriangle.end())
-                    side[k] = pieceSide(it->second, P[a], P[b], normal);
+                const int* segment = m_t.segmentTriangle.find(undirected(a, b));
+                if (a != b && segment)
+                    side[k] = pieceSide(*segment, P[a], P[b], normal);
             }
             for (int v : poly)
-                if (v < m_first && !m_cutVertices.count(v) && side[k] == 0)
+                if (v < m_first && !m_t.cutVertices.has(v) && side[k] == 0)
                     side[k] = cornerSide(q, v);
         }
         return side;
@@ -741,7 +832,7 @@ public:
     /// Triangulates every piece in triangle t's plane; the first triangle takes t's slot, the
     /// others are appended (inheriting t's cut-face flag).
     Status emitPieces(int t, const Tri& q, const std::vector<std::vector<int>>& polygons, const std::vector<int>& side,
-                      const std::unordered_map<int, int>& edgesOf) {
+                      const EdgeBits& edgesOf) {
         const auto& P = m_s.positions;
         const Vec3 n = (P[q[1]] - P[q[0]]).cross(P[q[2]] - P[q[0]]).cwiseAbs();
         const int drop = n.x() >= n.y() ? (n.x() >= n.z() ? 0 : 2) : (n.y() >= n.z() ? 1 : 2);
@@ -774,7 +865,7 @@ public:
                     index = m_s.triangleCount() - 1;
                 }
                 m_pieces.push_back(index);
-                m_side[index] = side[k];
+                setSide(index, side[k]);
             }
         }
         return Status::success();
@@ -790,11 +881,12 @@ public:
     /// than in q's plane; the cap would then close the same few points with its own triangles
     /// and the surface would pinch into a pocket (an edge of four triangles).
     Status triangulatePiece(int t, const Tri& q, const std::vector<int>& poly, int drop, int sign, int side,
-                            const std::unordered_map<int, int>& edgesOf, std::vector<Tri>& out) {
-        const auto onCut = [&](int v) { return (v >= m_first && !m_inner.count(v)) || m_cutVertices.count(v) > 0; };
+                            const EdgeBits& edgesOf, std::vector<Tri>& out) {
+        const auto onCut = [&](int v) { return (v >= m_first && !isInner(v)) || m_t.cutVertices.has(v); };
         const auto onOneEdge = [&](int a, int b) {
-            const auto ia = edgesOf.find(a), ib = edgesOf.find(b);
-            return ia != edgesOf.end() && ib != edgesOf.end() && (ia->second & ib->second) != 0;
+            const int* ia = edgesOf.find(a);
+            const int* ib = edgesOf.find(b);
+            return ia && ib && (*ia & *ib) != 0;
         };
         std::vector<int> rest;
         if (!earClip(poly, m_s.positions, drop, sign, onCut, onOneEdge, false, out, rest))
@@ -892,8 +984,7 @@ public:
                 uv += wv * m_s.cutUvs[v];
         }
         const int c = addVertex(p, uv, weights, {q[0], q[1]});
-        m_inner.insert(c);
-        m_innerSide[c] = side;
+        m_innerSide[c - m_first] = side;
         return c;
     }
 
@@ -916,7 +1007,7 @@ public:
         std::vector<int> scan = m_pieces;
         for (int t : m_candidates)
             for (int v : m_s.triangles[t])
-                if (v < m_first && m_cutVertices.count(v)) {
+                if (v < m_first && m_t.cutVertices.has(v)) {
                     scan.push_back(t);
                     break;
                 }
@@ -933,51 +1024,74 @@ public:
     /// partial cut the two sides are one region.)
     void assignSides() {
         const auto& P = m_s.positions;
-        std::unordered_map<std::uint64_t, std::vector<int>> byEdge;
+        // The touched triangles of every edge, in the order of m_touched (linked lists).
+        m_edgeLists.clear();
+        m_edgeEntries.clear();
+        m_t.byEdge.clear();
         for (int t : m_touched) {
             const Tri& q = m_s.triangles[t];
-            for (int e = 0; e < 3; ++e)
-                byEdge[undirected(q[e], q[(e + 1) % 3])].push_back(t);
-            if (m_side.count(t) && m_side[t] != 0)
+            for (int e = 0; e < 3; ++e) {
+                const auto [list, added] = m_t.byEdge.insert(undirected(q[e], q[(e + 1) % 3]),
+                                                             static_cast<int>(m_edgeLists.size()));
+                const int entry = static_cast<int>(m_edgeEntries.size());
+                m_edgeEntries.push_back({t, -1});
+                if (added) {
+                    m_edgeLists.push_back({entry, entry, 1});
+                } else {
+                    auto& l = m_edgeLists[*list];
+                    m_edgeEntries[l[1]][1] = entry;
+                    l[1] = entry;
+                    ++l[2];
+                }
+            }
+            if (sideOf(t) != 0)
                 continue;
             const Vec3 normal = (P[q[1]] - P[q[0]]).cross(P[q[2]] - P[q[0]]);
             const double longest = std::max({(P[q[1]] - P[q[0]]).squaredNorm(), (P[q[2]] - P[q[1]]).squaredNorm(),
                                              (P[q[0]] - P[q[2]]).squaredNorm()});
             if (!(normal.norm() > kFlatRatio * longest))
                 continue;
-            for (int e = 0; e < 3 && (!m_side.count(t) || m_side[t] == 0); ++e) {
-                const auto it = m_segmentTriangle.find(undirected(q[e], q[(e + 1) % 3]));
-                if (it != m_segmentTriangle.end())
-                    m_side[t] = pieceSide(it->second, P[q[e]], P[q[(e + 1) % 3]], normal);
+            for (int e = 0; e < 3 && sideOf(t) == 0; ++e) {
+                if (const int* s = m_t.segmentTriangle.find(undirected(q[e], q[(e + 1) % 3])))
+                    setSide(t, pieceSide(*s, P[q[e]], P[q[(e + 1) % 3]], normal));
             }
         }
+        const auto trianglesOf = [&](std::uint64_t key, int* out) {  // up to two; returns the count
+            const auto& l = m_edgeLists[*m_t.byEdge.find(key)];
+            if (l[2] <= 2) {
+                out[0] = m_edgeEntries[l[0]][0];
+                out[1] = m_edgeEntries[l[1]][0];
+            }
+            return l[2];
+        };
         // Where the cut separates cleanly, the sides follow from the topology alone: 2-colour
         // the touched triangles (an edge on the cut joins different colours, any other edge the
         // same) and give each coloured group the sign most of its probes vote for. A group with
         // a contradiction (around the end of a partial cut both sides are one region) keeps its
         // probed sides.
-        std::unordered_map<int, int> colour;
+        IndexMarks& colour = m_t.colour;
+        std::vector<int> group;
         for (int seed : m_touched) {
-            if (colour.count(seed))
+            if (colour.has(seed))
                 continue;
-            std::vector<int> group{seed};
-            colour[seed] = 1;
+            group.assign(1, seed);
+            colour.set(seed, 1);
             bool consistent = true;
             for (std::size_t i = 0; i < group.size(); ++i) {
                 const int t = group[i];
                 const Tri& q = m_s.triangles[t];
                 for (int e = 0; e < 3; ++e) {
                     const std::uint64_t key = undirected(q[e], q[(e + 1) % 3]);
-                    const auto& list = byEdge[key];
-                    if (list.size() != 2)
+                    int list[2];
+                    if (trianglesOf(key, list) != 2)
                         continue;
                     const int other = list[0] == t ? list[1] : list[0];
-                    const int wanted = m_cutEdges.count(key) ? -colour[t] : colour[t];
-                    if (auto it = colour.find(other); it != colour.end()) {
-                        consistent = consistent && it->second == wanted;
+                    const int wanted = m_t.cutEdges.contains(key) ? -colour.get(t) : colour.get(t);
+                    if (colour.has(other)) {
+                        consistent = consistent && colour.get(other) == wanted;
                         continue;
                     }
-                    colour[other] = wanted;
+                    colour.set(other, wanted);
                     group.push_back(other);
                 }
             }
@@ -985,61 +1099,76 @@ public:
                 continue;
             int vote = 0;
             for (int t : group)
-                if (auto it = m_side.find(t); it != m_side.end())
-                    vote += it->second * colour[t];
+                vote += sideOf(t) * colour.get(t);
             const int sign = vote >= 0 ? 1 : -1;
             for (int t : group)
-                m_side[t] = sign * colour[t];
+                setSide(t, sign * colour.get(t));
         }
         std::vector<int> queue;
         for (int t : m_touched)
-            if (m_side.count(t) && m_side[t] != 0)
+            if (sideOf(t) != 0)
                 queue.push_back(t);
         for (std::size_t i = 0; i < queue.size(); ++i) {
             const int t = queue[i];
             const Tri& q = m_s.triangles[t];
             for (int e = 0; e < 3; ++e) {
                 const std::uint64_t key = undirected(q[e], q[(e + 1) % 3]);
-                if (m_cutEdges.count(key))
+                if (m_t.cutEdges.contains(key))
                     continue;
-                for (int other : byEdge[key])
-                    if (!m_side.count(other) || m_side[other] == 0) {
-                        m_side[other] = m_side[t];
+                for (int k = m_edgeLists[*m_t.byEdge.find(key)][0]; k >= 0; k = m_edgeEntries[k][1]) {
+                    const int other = m_edgeEntries[k][0];
+                    if (sideOf(other) == 0) {
+                        setSide(other, sideOf(t));
                         queue.push_back(other);
                     }
+                }
             }
         }
     }
 
+    /// Side of the sweep of triangle t (0: not known).
+    int sideOf(int t) const { return m_t.side.get(t); }
+    void setSide(int t, int side) { m_t.side.set(t, side); }
+
     void separateSides() {
-        std::unordered_map<int, std::vector<int>> incident;
-        const std::vector<int>& scan = m_touched;
+        // The touched triangles of every vertex on the cut (lists reused between cuts).
+        std::vector<int> vertices;
+        const auto trianglesAt = [&](int v) -> std::vector<int>& {
+            if (m_t.incident.insert(v, static_cast<int>(vertices.size()))) {
+                if (m_incidentLists.size() <= vertices.size())
+                    m_incidentLists.emplace_back();
+                m_incidentLists[vertices.size()].clear();
+                vertices.push_back(v);
+            }
+            return m_incidentLists[m_t.incident.get(v)];
+        };
         // Every new vertex (split and pierce points) and every surface vertex on a polyline.
-        for (int t : scan)
+        for (int t : m_touched)
             for (int v : m_s.triangles[t])
-                if ((v >= m_first && !m_inner.count(v)) || m_cutVertices.count(v))
-                    incident[v].push_back(t);
+                if ((v >= m_first && !isInner(v)) || m_t.cutVertices.has(v))
+                    trianglesAt(v).push_back(t);
         // Surface vertices on the cut get their (u, v) on the sweep (for the caps).
-        for (const auto& [v, list] : incident)
+        for (int v : vertices)
             if (v < m_first)
                 m_edit.setCutUv(v, m_sweep.closestPoint(m_s.positions[v]).uv);
 
-        std::vector<int> vertices;
-        for (const auto& [v, list] : incident)
-            vertices.push_back(v);
         std::sort(vertices.begin(), vertices.end());
+        std::vector<std::pair<int, int>> byNeighbour;  // neighbour vertex -> a triangle with edge (c, it)
         for (int c : vertices) {
-            const std::vector<int>& tris = incident[c];
+            const std::vector<int>& tris = m_incidentLists[m_t.incident.get(c)];
             UnionFind groups(static_cast<int>(tris.size()));
-            std::unordered_map<int, int> byNeighbour;  // neighbour vertex -> a triangle with edge (c, it)
+            byNeighbour.clear();
             for (int i = 0; i < static_cast<int>(tris.size()); ++i) {
                 const Tri& q = m_s.triangles[tris[i]];
                 const int at = static_cast<int>(std::find(q.begin(), q.end(), c) - q.begin());
                 for (int x : {q[(at + 1) % 3], q[(at + 2) % 3]}) {
-                    if (m_cutEdges.count(undirected(c, x)))
+                    if (m_t.cutEdges.contains(undirected(c, x)))
                         continue;
-                    auto [it, added] = byNeighbour.emplace(x, i);
-                    if (!added)
+                    const auto it = std::find_if(byNeighbour.begin(), byNeighbour.end(),
+                                                 [&](const auto& entry) { return entry.first == x; });
+                    if (it == byNeighbour.end())
+                        byNeighbour.emplace_back(x, i);
+                    else
                         groups.unite(i, it->second);
                 }
             }
@@ -1047,19 +1176,21 @@ public:
             const int count = groups.compact(label);
             std::vector<int> groupSide(count, 0);
             for (int i = 0; i < static_cast<int>(tris.size()); ++i)
-                if (auto it = m_side.find(tris[i]); it != m_side.end() && groupSide[label[i]] == 0)
-                    groupSide[label[i]] = it->second;
+                if (groupSide[label[i]] == 0)
+                    groupSide[label[i]] = sideOf(tris[i]);
             for (int i = 0; i < static_cast<int>(tris.size()); ++i)
-                if (!m_side.count(tris[i]) || m_side[tris[i]] == 0)
-                    m_side[tris[i]] = groupSide[label[i]];
+                if (sideOf(tris[i]) == 0)
+                    setSide(tris[i], groupSide[label[i]]);
             if (count == 1) {
-                m_shared.insert(c);
+                if (m_t.shared.insert(c))
+                    m_sharedList.push_back(c);
                 continue;
             }
-            m_copySide[c] = groupSide[0];
+            if (c >= m_first)
+                m_copySide[c - m_first] = groupSide[0];
             for (int g = 1; g < count; ++g) {
                 const int copy = copyVertex(c);
-                m_copySide[copy] = groupSide[g];
+                m_copySide[copy - m_first] = groupSide[g];
                 for (int i = 0; i < static_cast<int>(tris.size()); ++i) {
                     if (label[i] != g)
                         continue;
@@ -1083,6 +1214,7 @@ public:
         const int origin = c < m_first ? c : m_origin[c - m_first];
         m_sourceEdge.push_back(source);
         m_origin.push_back(origin);
+        noteNewVertex();
         return m_s.vertexCount() - 1;
     }
 
@@ -1093,42 +1225,39 @@ public:
     Status traceBoundary(std::vector<std::vector<int>>& loops) {
         // Boundary edges join two cut vertices; every triangle holding such an edge holds a
         // cut vertex, so the opposite half-edge, if any, is among the touched triangles.
-        const auto onCut = [&](int v) { return m_cutVertices.count(originOf(v)) > 0; };
-        std::unordered_set<std::uint64_t> halfEdges;
+        const auto onCut = [&](int v) { return m_t.cutVertices.has(originOf(v)); };
         const std::vector<int>& tris = m_touched;
         for (int t : tris) {
             const Tri& q = m_s.triangles[t];
             for (int e = 0; e < 3; ++e)
-                halfEdges.insert(directed(q[e], q[(e + 1) % 3]));
+                m_t.halfEdges.insert(directed(q[e], q[(e + 1) % 3]), 1);
         }
-        std::unordered_map<int, int> next;
+        IndexMarks& next = m_t.next;  // a -> b for boundary edge a -> b
+        std::vector<int> starts;
         for (int t : tris) {
             const Tri& q = m_s.triangles[t];
             for (int e = 0; e < 3; ++e) {
                 const int a = q[e], b = q[(e + 1) % 3];
-                if (!onCut(a) || !onCut(b) || halfEdges.count(directed(b, a)))
+                if (!onCut(a) || !onCut(b) || m_t.halfEdges.contains(directed(b, a)))
                     continue;
-                if (!next.emplace(a, b).second)
+                if (!next.insert(a, b))
                     return Status::error("the cut boundary is not a set of simple loops (non-manifold cut)");
-                m_edgeSide[directed(a, b)] = m_side.count(t) ? m_side[t] : 0;
+                starts.push_back(a);
+                m_t.edgeSide.set(directed(a, b), sideOf(t));
             }
         }
-        std::vector<int> starts;
-        for (const auto& [a, b] : next)
-            starts.push_back(a);
         std::sort(starts.begin(), starts.end());
-        std::unordered_set<int> visited;
+        IndexMarks& visited = m_t.visited;
         for (int start : starts) {
-            if (visited.count(start))
+            if (visited.has(start))
                 continue;
             std::vector<int> loop;
-            for (int v = start; !visited.count(v);) {
-                visited.insert(v);
+            for (int v = start; !visited.has(v);) {
+                visited.set(v, 1);
                 loop.push_back(v);
-                auto it = next.find(v);
-                if (it == next.end())
+                if (!next.has(v))
                     return Status::error("the cut boundary is open (the surface was not closed)");
-                v = it->second;
+                v = next.get(v);
             }
             loops.push_back(std::move(loop));
         }
@@ -1174,9 +1303,9 @@ public:
             const int n = static_cast<int>(loop.size());
             std::vector<int> cuts;
             for (int i = 0; i < n; ++i)
-                if (m_shared.count(loop[i]))
+                if (m_t.shared.has(loop[i]))
                     cuts.push_back(i);
-            const auto sideAt = [&](int i) { return m_edgeSide[directed(loop[i], loop[(i + 1) % n])]; };
+            const auto sideAt = [&](int i) { return m_t.edgeSide.get(directed(loop[i], loop[(i + 1) % n])); };
             if (cuts.empty()) {
                 if (sideAt(0) == 0)
                     return Status::error("a cut-boundary loop lies on no side of the sweep");
@@ -1254,12 +1383,12 @@ public:
         std::unordered_map<std::uint64_t, std::array<int, 2>> sides;  // origin edge -> (+ tri, - tri)
         for (int t : m_touched) {
             const Tri& q = m_s.triangles[t];
-            const int s = m_side.count(t) ? m_side[t] : 0;
+            const int s = sideOf(t);
             if (s == 0)
                 continue;
             for (int e = 0; e < 3; ++e) {
                 const std::uint64_t key = undirected(originOf(q[e]), originOf(q[(e + 1) % 3]));
-                if (!m_cutEdges.count(key))
+                if (!m_t.cutEdges.contains(key))
                     continue;
                 auto& entry = sides.try_emplace(key, std::array<int, 2>{-1, -1}).first->second;
                 entry[s > 0 ? 0 : 1] = t;
@@ -1275,31 +1404,46 @@ public:
                     continue;
                 for (int w : m_s.triangles[pair[1]])
                     if (originOf(w) == o) {
-                        const auto [it, added] = m_mate.emplace(u, w);
-                        m_mirrorable = m_mirrorable && (added || it->second == w);
+                        const bool added = addMate(u, w);
+                        m_mirrorable = m_mirrorable && (added || m_t.mate.get(u) == w);
                     }
             }
         }
-        for (int v : m_shared)
-            m_mate[v] = v;
+        for (int v : m_sharedList)
+            setMate(v, v);
         // Two + copies with one - copy mate (a vertex the cut passes through twice): the caps
         // cannot mirror each other vertex for vertex.
-        std::unordered_map<int, int> mateOf;
-        for (const auto& [u, w] : m_mate)
-            if (u != w && !mateOf.emplace(w, u).second)
+        for (int u : m_mateKeys) {
+            const int w = m_t.mate.get(u);
+            if (u != w && !m_t.mateOf.insert(w, u))
                 m_mirrorable = false;
+        }
     }
+
+    /// + copy -> - copy (m_t.mate, keys in m_mateKeys): adds u's mate unless it has one.
+    bool addMate(int u, int w) {
+        if (!m_t.mate.insert(u, w))
+            return false;
+        m_mateKeys.push_back(u);
+        return true;
+    }
+    void setMate(int u, int w) {
+        if (!addMate(u, w))
+            m_t.mate.at(u) = w;
+    }
+    /// The mate of v, or -1.
+    int mateOf(int v) const { return m_t.mate.get(v, -1); }
 
     /// True if the surface (outside the caps) has the edge (a, b). Only edges between two cut
     /// vertices matter here; they are all in touched triangles.
     bool surfaceHasEdge(int a, int b) {
-        if (m_surfaceEdges.empty())
+        if (m_t.surfaceEdges.empty())
             for (int t : m_touched) {
                 const Tri& q = m_s.triangles[t];
                 for (int e = 0; e < 3; ++e)
-                    m_surfaceEdges.insert(undirected(q[e], q[(e + 1) % 3]));
+                    m_t.surfaceEdges.set(undirected(q[e], q[(e + 1) % 3]), 1);
             }
-        return m_surfaceEdges.count(undirected(a, b)) > 0;
+        return m_t.surfaceEdges.get(undirected(a, b)) != 0;
     }
 
     /// A cap edge between two boundary vertices that the surface beside it also has (on
@@ -1316,10 +1460,10 @@ public:
         const auto forbidden = [&](int a, int b) {
             const int u = vertexOf[a], w = vertexOf[b];
             // Between two shared vertices an interior edge of the + cap is one of the - cap too.
-            if (surfaceHasEdge(u, w) || (m_shared.count(u) && m_shared.count(w)))
+            if (surfaceHasEdge(u, w) || (m_t.shared.has(u) && m_t.shared.has(w)))
                 return true;
-            const auto mu = m_mate.find(u), mw = m_mate.find(w);
-            return mu != m_mate.end() && mw != m_mate.end() && surfaceHasEdge(mu->second, mw->second);
+            const int mu = mateOf(u), mw = mateOf(w);
+            return mu >= 0 && mw >= 0 && surfaceHasEdge(mu, mw);
         };
         const auto ccw = [&](int a, int b, int c) {
             return orient2dProjected(Vec3(uv[a].x(), uv[a].y(), 0), Vec3(uv[b].x(), uv[b].y(), 0),
@@ -1334,6 +1478,18 @@ public:
                     edges[undirected(cap[t][e], cap[t][(e + 1) % 3])].push_back({t, (e + 2) % 3});
             return edges;
         };
+        // Most caps have no forbidden interior edge: then there is nothing to flip or split.
+        m_t.capEdges.clear();
+        m_t.capEdges.reserve(3 * static_cast<int>(cap.size()));
+        for (const auto& c : cap)
+            for (int e = 0; e < 3; ++e)
+                ++*m_t.capEdges.insert(undirected(c[e], c[(e + 1) % 3]), 0).first;
+        bool any = false;
+        for (const auto& c : cap)
+            for (int e = 0; e < 3 && !any; ++e)
+                any = m_t.capEdges.get(undirected(c[e], c[(e + 1) % 3])) == 2 && forbidden(c[e], c[(e + 1) % 3]);
+        if (!any)
+            return;
         for (int round = 0; round < 4; ++round) {
             const EdgeMap edges = edgesOf();
             bool flipped = false;
@@ -1390,15 +1546,15 @@ public:
         const auto addCapVertex = [&](int u, int w, int vertexSide) {
             const std::array<int, 2> source = u >= m_first ? m_sourceEdge[u - m_first] : std::array<int, 2>{u, w};
             const int v = addVertex(0.5 * (m_s.positions[u] + m_s.positions[w]), middle, {{u, 0.5}, {w, 0.5}}, source);
-            m_copySide[v] = vertexSide;
+            m_copySide[v - m_first] = vertexSide;
             return v;
         };
         const int m = static_cast<int>(uv.size());
         uv.push_back(middle);
         vertexOf.push_back(addCapVertex(vertexOf[x], vertexOf[y], side));
-        const auto mx = m_mate.find(vertexOf[x]), my = m_mate.find(vertexOf[y]);
-        if (mirrored && mx != m_mate.end() && my != m_mate.end())  // (else closeCaps reports the missing mate)
-            m_mate[vertexOf[m]] = addCapVertex(mx->second, my->second, -side);
+        const int mx = mateOf(vertexOf[x]), my = mateOf(vertexOf[y]);
+        if (mirrored && mx >= 0 && my >= 0)  // (else closeCaps reports the missing mate)
+            setMate(vertexOf[m], addCapVertex(mx, my, -side));
         cap[t1] = {x, m, c};
         cap.push_back({m, y, c});
         cap[t2] = {y, m, d};
@@ -1421,7 +1577,7 @@ public:
                 for (const auto& polygon : polygons)
                     for (std::size_t i = 0; i < polygon.size(); ++i) {
                         const int u = polygon[i], w = polygon[(i + 1) % polygon.size()];
-                        const bool onLoop = m_edgeSide.count(directed(u, w)) || m_edgeSide.count(directed(w, u));
+                        const bool onLoop = m_t.edgeSide.contains(directed(u, w)) || m_t.edgeSide.contains(directed(w, u));
                         if (!onLoop && surfaceHasEdge(u, w))
                             chords.push_back({u, w});
                     }
@@ -1448,14 +1604,15 @@ public:
         const std::array<int, 2> source = u >= m_first ? sourceOf(u) : sourceOf(w);
         const int m = addVertex(0.5 * (m_s.positions[u] + m_s.positions[w]), 0.5 * (m_s.cutUvs[u] + m_s.cutUvs[w]),
                                 {{u, 0.5}, {w, 0.5}}, source);
-        m_inner.insert(m);
+
         int side = 0;
         for (std::size_t k = 0; k < beside.size(); ++k) {
-            const int s = m_side.count(beside[k]) ? m_side[beside[k]] : 0;
+            const int s = sideOf(beside[k]);
             side = k == 0 ? s : s == side ? side : 0;
         }
-        m_innerSide[m] = side;
-        m_surfaceEdges.erase(undirected(u, w));
+        m_innerSide[m - m_first] = side;
+        if (int* present = m_t.surfaceEdges.find(undirected(u, w)))
+            *present = 0;
         for (int t : beside) {
             const Tri q = m_s.triangles[t];
             int e = 0;
@@ -1466,11 +1623,11 @@ public:
             m_s.triangles.push_back({m, b, x});
             m_s.cutFaces.push_back(m_s.cutFaces[t]);
             const int added = m_s.triangleCount() - 1;
-            if (m_side.count(t))
-                m_side[added] = m_side[t];
+            if (m_t.side.has(t))
+                setSide(added, sideOf(t));
             m_touched.push_back(added);
             for (int v : {a, b, x})
-                m_surfaceEdges.insert(undirected(m, v));
+                m_t.surfaceEdges.set(undirected(m, v), 1);
         }
     }
 
@@ -1481,14 +1638,18 @@ public:
         findMates();
         // Each piece is closed on its own: loops grouped by the connected component of the
         // surface they bound (pieces may touch along earlier cuts, where their points coincide).
-        UnionFind pieces(m_s.vertexCount());
-        for (const Tri& q : m_s.triangles) {
-            pieces.unite(q[1], q[0]);
-            pieces.unite(q[2], q[0]);
-        }
         std::map<int, std::vector<std::vector<int>>> loopsOfPiece;
-        for (const auto& loop : loops)
-            loopsOfPiece[pieces.find(loop[0])].push_back(loop);
+        if (needsPieces(loops)) {
+            UnionFind pieces(m_s.vertexCount());
+            for (const Tri& q : m_s.triangles) {
+                pieces.unite(q[1], q[0]);
+                pieces.unite(q[2], q[0]);
+            }
+            for (const auto& loop : loops)
+                loopsOfPiece[pieces.find(loop[0])].push_back(loop);
+        } else {
+            loopsOfPiece[0] = loops;
+        }
         if (Status s = splitSurfaceEdgesUnderChords(loopsOfPiece); !s.ok())
             return s;
         m_capStart = m_s.triangleCount();  // (the splits appended surface triangles)
@@ -1514,11 +1675,11 @@ public:
                     std::swap(plus[1], plus[2]);
                 Tri minus;
                 for (int k = 0; k < 3; ++k) {
-                    auto it = m_mate.find(plus[k]);
-                    if (it == m_mate.end()) {
+                    const int mate = mateOf(plus[k]);
+                    if (mate < 0) {
                         return Status::error("a cut-boundary vertex has no copy on the other side");
                     }
-                    minus[k] = it->second;
+                    minus[k] = mate;
                 }
                 std::swap(minus[1], minus[2]);
                 // A triangle of shared vertices only (between chords of a partial cut) is its own
@@ -1536,6 +1697,26 @@ public:
             return Status::error("the cut boundary has no side to close");
         m_out.capTriangles = 2 * capCount;
         return Status::success();
+    }
+
+    /// False where grouping the loops by piece cannot change the caps, so that the pass over the
+    /// whole surface that finds the pieces is not needed: a single loop, or mirrored caps of
+    /// whole loops (no lips, hence no chords) of which at most one is on the + side (only its
+    /// piece gets a cap, whatever the others' pieces; a complete cut through one piece).
+    bool needsPieces(const std::vector<std::vector<int>>& loops) const {
+        if (loops.size() <= 1)
+            return false;
+        if (!m_mirrorable)
+            return true;
+        int plus = 0;
+        for (const auto& loop : loops) {
+            for (int v : loop)
+                if (m_t.shared.has(v))
+                    return true;
+            if (m_t.edgeSide.get(directed(loop[0], loop[1 % loop.size()])) == 1)
+                ++plus;
+        }
+        return plus > 1;
     }
 
     /// Triangulates the region bounded by `polygons` (surface vertices) in the sweep's (u, v)
@@ -1598,24 +1779,22 @@ public:
     }
 
     void finishCounts() {
-        m_out.splitEdges = static_cast<int>(m_splits.size());
-        for (const auto& [key, list] : m_splits)
-            for (const EdgeSplit& s : list)
-                if (m_shared.count(s.vertex))
-                    ++m_out.faceVertices;
+        m_out.splitEdges = static_cast<int>(m_splitRanges.size());
+        for (const EdgeSplit& s : m_splitStore)
+            if (m_t.shared.has(s.vertex))
+                ++m_out.faceVertices;
         const int added = m_s.vertexCount() - m_first;
         m_out.sourceEdge = m_sourceEdge;
         m_out.sweepUv.assign(m_s.cutUvs.begin() + m_first, m_s.cutUvs.end());
         m_out.side.assign(added, 0);
         for (int v = m_first; v < m_s.vertexCount(); ++v) {
-            if (auto it = m_innerSide.find(v); it != m_innerSide.end()) {
-                m_out.side[v - m_first] = it->second;
+            if (isInner(v)) {
+                m_out.side[v - m_first] = m_innerSide[v - m_first];
                 continue;
             }
-            if (m_shared.count(v))
+            if (m_t.shared.has(v))
                 continue;
-            auto it = m_copySide.find(v);
-            m_out.side[v - m_first] = it == m_copySide.end() ? 0 : it->second;
+            m_out.side[v - m_first] = m_copySide[v - m_first];
         }
     }
 
@@ -1627,40 +1806,46 @@ public:
     const int m_first;
 
     std::vector<int> m_candidates;
-    std::unordered_map<std::uint64_t, std::vector<EdgeSplit>> m_splits;
-    std::unordered_set<int> m_onSweep;
+    SurfaceIndex* m_index;
+    SurfaceCutWorkspace::Tables& m_t;
+    std::vector<EdgeSplit> m_splitStore;                  ///< the crossings, grouped by edge
+    std::vector<std::array<int, 2>> m_splitRanges;        ///< per crossed edge (m_t.splits): first, count
     std::unordered_map<int, std::vector<int>> m_holding;  ///< on-sweep vertex -> sweep triangles
     std::vector<std::array<int, 3>> m_neighbour;          ///< sweep triangle -> across each edge
     std::vector<std::vector<int>> m_vertexTriangles;      ///< sweep vertex -> triangles
     std::vector<std::array<int, 2>> m_sourceEdge;         ///< per new vertex
     std::vector<int> m_origin;                            ///< per new vertex: the cut vertex it copies
-    std::unordered_set<std::uint64_t> m_cutEdges;         ///< (origin) edges on the cut
-    std::unordered_set<int> m_cutVertices;                ///< vertices on the cut polylines
     std::vector<int> m_pieces;                            ///< triangles made by step 4
     std::vector<int> m_touched;                           ///< triangles at cut vertices
-    std::unordered_map<int, int> m_side;                  ///< triangle -> side of the sweep
-    std::unordered_set<int> m_shared;                     ///< cut vertices kept as one (face vertices)
-    std::unordered_map<int, int> m_copySide;              ///< cut vertex copy -> its side
-    std::unordered_map<std::uint64_t, int> m_edgeSide;    ///< boundary half-edge -> side
-    std::unordered_map<int, int> m_mate;                  ///< + copy -> - copy
-    std::unordered_set<int> m_inner;                      ///< new vertices inside a piece (fan centres)
+    std::vector<std::vector<int>> m_incidentLists;        ///< separateSides: per vertex on the cut
+    std::vector<std::array<int, 3>> m_edgeLists;          ///< assignSides: per edge head, tail, count
+    std::vector<std::array<int, 2>> m_edgeEntries;        ///< assignSides: triangle, next entry
+    std::vector<int> m_sharedList;                        ///< cut vertices kept as one (face vertices; m_t.shared)
+    std::vector<int> m_copySide;                          ///< per new vertex: its side if a cut vertex copy (else 0)
+    std::vector<int> m_mateKeys;                          ///< vertices with a mate (m_t.mate: + copy -> - copy)
     int m_capStart = 0;                                   ///< first cap triangle
     bool m_mirrorable = true;                             ///< every + boundary vertex has one - mate
-    std::unordered_set<std::uint64_t> m_surfaceEdges;     ///< edges of the touched triangles
-    std::unordered_map<std::uint64_t, int> m_segmentTriangle;  ///< cut segment -> the sweep triangle it lies in
-    std::unordered_map<int, int> m_innerSide;             ///< their side
+    /// Per new vertex: its side if it lies inside a piece (fan centres, split surface edges;
+    /// off the cut), else kNotInner.
+    std::vector<int> m_innerSide;
 };
 
 } // namespace
 
-Status cutSurface(TriangleSurface& surface, std::vector<Vec3>* rest, const SweepSurface& sweep, SurfaceCut& out) {
+Status cutSurface(TriangleSurface& surface, std::vector<Vec3>* rest, const SweepSurface& sweep, SurfaceCut& out,
+                  SurfaceIndex* index, SurfaceCutWorkspace* workspace) {
     out = {};
     out.firstNewVertex = surface.vertexCount();
     if (rest && static_cast<int>(rest->size()) != surface.vertexCount())
         return Status::error("rest positions do not match the surface's vertices");
     if (!surface.uvs.empty() && surface.uvs.size() != surface.positions.size())
         return Status::error("the surface's texture coordinates do not match its vertices");
-    SurfaceCutter cutter(surface, rest, sweep, out);
+    std::unique_ptr<SurfaceCutWorkspace> local;
+    if (!workspace) {
+        local = std::make_unique<SurfaceCutWorkspace>();
+        workspace = local.get();
+    }
+    SurfaceCutter cutter(surface, rest, sweep, out, index, workspace->tables());
     if (Status s = cutter.run(); !s.ok()) {
         const int first = out.firstNewVertex;
         out = {};

@@ -31,6 +31,7 @@
 #include "core/status.h"
 #include "core/sweep/sweep_surface.h"
 
+#include <memory>
 #include <vector>
 
 namespace resect {
@@ -47,14 +48,34 @@ struct SurfaceCut {
     std::vector<int> side;      ///< side of the sweep of each new vertex (+1, -1; 0 if shared)
 };
 
+class SurfaceIndex;  // core/embed/surface_index.h
+
+/// Reusable scratch of cutSurface: marks per vertex and triangle and edge tables, cleared per
+/// cut in O(1), so that a cut allocates nothing in proportion to the surface. Scratch, not
+/// state: a copy starts empty.
+class SurfaceCutWorkspace {
+public:
+    SurfaceCutWorkspace();
+    ~SurfaceCutWorkspace();
+    SurfaceCutWorkspace(const SurfaceCutWorkspace&);
+    SurfaceCutWorkspace& operator=(const SurfaceCutWorkspace&);
+    struct Tables;
+    Tables& tables() { return *m_tables; }
+
+private:
+    std::unique_ptr<Tables> m_tables;
+};
+
 /// Cuts a closed, manifold, outward-oriented surface along the sweep, in place: crossed
 /// triangles are replaced and new vertices and triangles appended (triangles the cut does not
 /// touch keep their index). `rest` (optional) holds one reference position per vertex and is
-/// extended like the positions; `surface.cutUvs` and `surface.cutFaces` are filled. Cost:
-/// one bounding-box pass over the index array, then in proportion to the triangles near the
-/// sweep (plus one pass over the triangles when cut loops overlap in (u, v), to tell pieces
-/// apart). On error nothing is changed. A surface the sweep misses is left unchanged
-/// (success, zero counts).
-Status cutSurface(TriangleSurface& surface, std::vector<Vec3>* rest, const SweepSurface& sweep, SurfaceCut& out);
+/// extended like the positions; `surface.cutUvs` and `surface.cutFaces` are filled. Cost: in
+/// proportion to the triangles near the sweep when `index` (built for this surface, see
+/// surface_index.h; kept current here) is given, else after one bounding-box pass over the
+/// index array; plus one pass over the triangles when several cut loops on one side need to be
+/// told apart by piece. `workspace` (optional) keeps the scratch tables between cuts. On error
+/// nothing is changed. A surface the sweep misses is left unchanged (success, zero counts).
+Status cutSurface(TriangleSurface& surface, std::vector<Vec3>* rest, const SweepSurface& sweep, SurfaceCut& out,
+                  SurfaceIndex* index = nullptr, SurfaceCutWorkspace* workspace = nullptr);
 
 } // namespace resect

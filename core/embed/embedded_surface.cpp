@@ -12,12 +12,13 @@ namespace resect {
 Status EmbeddedSurface::bind(const TetMesh& mesh, TriangleSurface surface) {
     m_surface = {};
     m_binding = {};
+    m_index = {};
     if (Status s = m_binding.bind(mesh, surface); !s.ok())
         return s;
     m_surface = std::move(surface);
+    m_index.build(m_surface);
     // Cut-face data from the start, and headroom, so that cuts append without moving the
-    // whole surface (a cut then costs in proportion to what it touches, plus one bounding-box
-    // pass over the triangles; see cutSurface).
+    // whole surface (a cut then costs in proportion to what it touches; see cutSurface).
     m_surface.cutUvs.resize(m_surface.positions.size(), Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
     m_surface.cutFaces.resize(m_surface.triangles.size(), 0);
     const auto headroom = [](auto& v) { v.reserve(v.size() + v.size() / 4 + 1024); };
@@ -29,9 +30,24 @@ Status EmbeddedSurface::bind(const TetMesh& mesh, TriangleSurface surface) {
     return Status::success();
 }
 
-void EmbeddedSurface::update(const TetMesh& mesh) {
-    if (!empty())
-        m_binding.apply(mesh, m_surface.positions);
+void EmbeddedSurface::update(const TetMesh& mesh, int threads) {
+    if (empty())
+        return;
+    m_binding.apply(mesh, m_surface.positions, m_keepRender ? &m_render : nullptr, threads);
+    m_index.positionsChanged();
+}
+
+void EmbeddedSurface::keepRenderPositions(bool keep) {
+    m_keepRender = keep;
+    if (!keep) {
+        m_render.clear();
+        m_render.shrink_to_fit();
+        return;
+    }
+    m_render.resize(3 * m_surface.positions.size());
+    for (std::size_t v = 0; v < m_surface.positions.size(); ++v)
+        for (int k = 0; k < 3; ++k)
+            m_render[3 * v + k] = static_cast<float>(m_surface.positions[v][k]);
 }
 
 Status EmbeddedSurface::cut(const TetMesh& mesh, const CutChanges& changes, const SweepSurface& sweep,
@@ -47,7 +63,7 @@ Status EmbeddedSurface::cut(const TetMesh& mesh, const CutChanges& changes, cons
     // Re-binding only reads the positions of the vertices it re-binds (never moved by the
     // surface cut) and the new vertices are bound after it.
     auto t0 = Clock::now();
-    if (Status s = cutSurface(m_surface, nullptr, sweep, c.surface); !s.ok())
+    if (Status s = cutSurface(m_surface, nullptr, sweep, c.surface, &m_index, &m_workspace); !s.ok())
         return s;
     c.cutMs = ms(t0);
     t0 = Clock::now();
@@ -55,7 +71,8 @@ Status EmbeddedSurface::cut(const TetMesh& mesh, const CutChanges& changes, cons
     c.rebindMs = ms(t0);
     t0 = Clock::now();
     const SurfaceCut& sc = c.surface;
-    m_binding.bindNewVertices(mesh, m_surface.positions, sc.firstNewVertex, sc.sourceEdge, sc.side, changes, sweep);
+    m_binding.bindNewVertices(mesh, m_surface.positions, sc.firstNewVertex, sc.sourceEdge, sc.side, changes, sweep,
+                              true);
     c.bindNewMs = ms(t0);
     if (stats)
         *stats = std::move(c);
@@ -141,6 +158,7 @@ std::vector<TriangleSurface> EmbeddedSurface::splitOff(const std::vector<int>& p
     }
     m_binding.compact(kept, newTetOf, mesh.tetCount(), rebound);
     m_surface = std::move(remaining);
+    m_index.build(m_surface);
     return out;
 }
 
@@ -160,34 +178,44 @@ EmbeddedSurface::RemeshRecord EmbeddedSurface::recordAround(const TetMesh& mesh,
     return record;
 }
 
-void EmbeddedSurface::followRemesh(const TetMesh& mesh, const RemeshRecord& record, const std::vector<int>& newTet,
-                                   const std::vector<int>& newNode) {
-    if (empty())
-        return;
+namespace {
+
+/// The tets each recorded vertex may be bound to after a remeshing: those of its recorded tet's
+/// nodes, mapped through `newNode` (old -> new, -1: none), sorted.
+template <class NewNode>
+std::vector<std::vector<int>> candidatesAfterRemesh(const TetMesh& mesh, const EmbeddedSurface::RemeshRecord& record,
+                                                    const NewNode& newNode) {
     std::vector<std::vector<int>> candidates(record.vertices.size());
     for (std::size_t i = 0; i < record.vertices.size(); ++i) {
         std::vector<int>& c = candidates[i];
         for (int n : record.nodes[i]) {
-            const int node = newNode.empty() ? n : newNode[n];
+            const int node = newNode(n);
             if (node >= 0)
                 c.insert(c.end(), mesh.nodeTets(node).begin(), mesh.nodeTets(node).end());
         }
         std::sort(c.begin(), c.end());
         c.erase(std::unique(c.begin(), c.end()), c.end());
     }
-    m_binding.rebindAfterRemesh(mesh, record.vertices, record.positions, candidates, newTet);
+    return candidates;
 }
 
-void EmbeddedSurface::followRemesh(const TetMesh& mesh, const RemeshRecord& record, const MeshRenumbering& r) {
-    if (empty()) return;
-    std::vector<int> newTet, newNode;
-    if (!r.empty()) {
-        newTet.resize(r.tets.oldCount);
-        for (int t = 0; t < r.tets.oldCount; ++t) newTet[t] = r.tets(t);
-        newNode.resize(r.nodes.oldCount);
-        for (int n = 0; n < r.nodes.oldCount; ++n) newNode[n] = r.nodes(n);
-    }
-    followRemesh(mesh, record, newTet, newNode);
+} // namespace
+
+void EmbeddedSurface::followRemesh(const TetMesh& mesh, const RemeshRecord& record,
+                                   const MeshRenumbering& renumbering) {
+    if (empty())
+        return;
+    const auto candidates = candidatesAfterRemesh(mesh, record, [&](int n) { return renumbering.nodes(n); });
+    m_binding.rebindAfterRemesh(mesh, record.vertices, record.positions, candidates, renumbering.tets);
+}
+
+void EmbeddedSurface::followRemesh(const TetMesh& mesh, const RemeshRecord& record, const std::vector<int>& newTet,
+                                   const std::vector<int>& newNode) {
+    if (empty())
+        return;
+    const auto candidates =
+        candidatesAfterRemesh(mesh, record, [&](int n) { return newNode.empty() ? n : newNode[n]; });
+    m_binding.rebindAfterRemesh(mesh, record.vertices, record.positions, candidates, newTet);
 }
 
 } // namespace resect

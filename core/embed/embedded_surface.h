@@ -4,13 +4,15 @@
 // sequences it with the tet cut: update() whenever the tets moved, cut() right after each tet
 // cut, with the cut's change list.
 //
-// cut() cuts the surface along the sweep and closes it (cutSurface), re-binds the vertices
-// the tet cut touched (SurfaceBinding::rebind), and binds the new vertices on their side
+// cut() cuts the surface along the sweep and closes it (cutSurface, finding the triangles near
+// the sweep through a SurfaceIndex), re-binds the vertices the tet cut touched
+// (SurfaceBinding::rebind), and binds the new vertices on their side
 // (SurfaceBinding::bindNewVertices).
 
 #include "core/embed/binding.h"
-#include "core/mesh/renumbering.h"
 #include "core/embed/cut_surface.h"
+#include "core/embed/surface_index.h"
+#include "core/mesh/renumbering.h"
 
 namespace resect {
 
@@ -27,8 +29,14 @@ public:
     /// is left empty.
     Status bind(const TetMesh& mesh, TriangleSurface surface);
 
-    /// Moves every vertex with the tets (SurfaceBinding::apply).
-    void update(const TetMesh& mesh);
+    /// Moves every vertex with the tets (SurfaceBinding::apply, on `threads` threads, 0: OpenMP's
+    /// default), and refreshes renderPositions() when it is kept.
+    void update(const TetMesh& mesh, int threads = 0);
+    /// Keep a float copy of the positions (x y z per vertex) that update() writes in the same
+    /// pass, for a renderer (off by default: 12 more bytes per vertex and update).
+    void keepRenderPositions(bool keep);
+    /// The positions as floats, as of the last update() (empty unless kept).
+    const std::vector<float>& renderPositions() const { return m_render; }
 
     /// After a tet cut (see above). The surface's positions must be those update() gave
     /// before the tet cut. On error the surface and its binding are unchanged.
@@ -47,18 +55,21 @@ public:
     /// Around a local remeshing of the tets (core/cut/improve_mesh.h): recordAround() notes the
     /// vertices bound to the tets that may change, with their current positions and their tets'
     /// nodes; followRemesh() binds them again among the tets of those nodes afterwards (mapped
-    /// through newNode, old -> new, empty: unchanged), and renumbers the other vertices' tets
-    /// through newTet (empty: unchanged). In proportion to the recorded vertices (plus the
-    /// surface when renumbered).
+    /// through renumbering.nodes; a removed node adds none), and renumbers the other vertices'
+    /// tets through renumbering.tets (a tet's vertex list moves with it). In proportion to the
+    /// recorded vertices, their candidate tets and the changed indices, not to the surface.
     struct RemeshRecord {
         std::vector<int> vertices;
         std::vector<Vec3> positions;
         std::vector<Tet> nodes;
     };
     RemeshRecord recordAround(const TetMesh& mesh, const std::vector<int>& tets) const;
+    void followRemesh(const TetMesh& mesh, const RemeshRecord& record, const MeshRenumbering& renumbering);
+    /// The same with dense renumberings (old -> new for every old tet and node; empty: none; a
+    /// collapsed node maps to the node it merged into, whose tets are then candidates too), as
+    /// ImproveResult gives them. O(tets) for the conversion.
     void followRemesh(const TetMesh& mesh, const RemeshRecord& record, const std::vector<int>& newTet,
                       const std::vector<int>& newNode);
-    void followRemesh(const TetMesh& mesh, const RemeshRecord& record, const MeshRenumbering& renumbering);
 
     bool empty() const { return m_surface.triangles.empty(); }
     const TriangleSurface& surface() const { return m_surface; }
@@ -67,6 +78,10 @@ public:
 private:
     TriangleSurface m_surface;
     SurfaceBinding m_binding;
+    SurfaceIndex m_index;              ///< where cuts find the triangles near their sweep
+    SurfaceCutWorkspace m_workspace;   ///< the surface cut's scratch, kept between cuts
+    bool m_keepRender = false;
+    std::vector<float> m_render;  ///< 3 #V, when kept
 };
 
 } // namespace resect

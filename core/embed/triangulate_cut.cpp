@@ -1,5 +1,7 @@
 #include "core/embed/triangulate_cut.h"
 
+#include "core/embed/flat_marks.h"
+
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
@@ -11,7 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
-#include <map>
+#include <numeric>
 #include <string>
 #include <unordered_map>
 
@@ -45,16 +47,36 @@ struct MergedLoops {
 MergedLoops merge(const std::vector<Vec2>& points, const std::vector<std::vector<int>>& loops) {
     MergedLoops m;
     m.distinctOf.assign(points.size(), -1);
-    std::map<std::pair<double, double>, int> index;
+    // The loops' points in order of first use, then sorted by (u, v) (ties: first use first), so
+    // that equal points are neighbours; each run of equal points is one distinct point, numbered
+    // in order of first use.
+    std::vector<int> used;
     for (const auto& loop : loops)
-        for (int i : loop) {
-            if (m.distinctOf[i] >= 0)
-                continue;
-            const auto [it, added] = index.emplace(std::pair{points[i].x(), points[i].y()}, int(m.points.size()));
-            if (added)
-                m.points.push_back(points[i]);
-            m.distinctOf[i] = it->second;
+        for (int i : loop)
+            if (m.distinctOf[i] == -1) {
+                m.distinctOf[i] = -2;
+                used.push_back(i);
+            }
+    std::vector<int> order(used.size());
+    std::iota(order.begin(), order.end(), 0);
+    const auto same = [&](int a, int b) {
+        return points[used[a]].x() == points[used[b]].x() && points[used[a]].y() == points[used[b]].y();
+    };
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+        const Vec2 &p = points[used[a]], &q = points[used[b]];
+        return p.x() != q.x() ? p.x() < q.x() : p.y() != q.y() ? p.y() < q.y() : a < b;
+    });
+    std::vector<int> leader(used.size());  // per used point: the first-used point equal to it
+    for (std::size_t k = 0; k < order.size(); ++k)
+        leader[order[k]] = k > 0 && same(order[k], order[k - 1]) ? leader[order[k - 1]] : order[k];
+    for (std::size_t j = 0; j < used.size(); ++j) {
+        if (leader[j] == static_cast<int>(j)) {
+            m.distinctOf[used[j]] = static_cast<int>(m.points.size());
+            m.points.push_back(points[used[j]]);
+        } else {
+            m.distinctOf[used[j]] = m.distinctOf[used[leader[j]]];
         }
+    }
     for (const auto& loop : loops)
         for (std::size_t k = 0; k < loop.size(); ++k) {
             const int a = loop[k], b = loop[(k + 1) % loop.size()];
@@ -214,18 +236,16 @@ void triangulateByEars(const std::vector<Vec2>& P, std::vector<std::vector<int>>
 /// counter-clockwise triangle on its left) or b -> a (side -1).
 bool coversLoops(const std::vector<std::array<int, 3>>& triangles, const std::vector<std::vector<int>>& loops,
                  int side) {
-    std::unordered_map<std::uint64_t, int> count;
+    EdgeTable count;
+    count.reserve(3 * static_cast<int>(triangles.size()));
     for (const auto& t : triangles)
         for (int e = 0; e < 3; ++e)
-            ++count[directedKey(t[e], t[(e + 1) % 3])];
-    for (const auto& [key, n] : count)
-        if (n > 1)
-            return false;  // two triangles on one side of an edge: not a disc
+            if (++*count.insert(directedKey(t[e], t[(e + 1) % 3]), 0).first > 1)
+                return false;  // two triangles on one side of an edge: not a disc
     for (const auto& loop : loops)
         for (std::size_t k = 0; k < loop.size(); ++k) {
             const int a = loop[k], b = loop[(k + 1) % loop.size()];
-            const auto it = count.find(side > 0 ? directedKey(a, b) : directedKey(b, a));
-            if (it == count.end() || it->second != 1)
+            if (count.get(side > 0 ? directedKey(a, b) : directedKey(b, a)) != 1)
                 return false;
         }
     return true;
