@@ -287,6 +287,7 @@ public:
         if (Status s = splitTriangles(); !s.ok())
             return s;
         collectTouched();
+        groupFans();
         assignSides();
         separateSides();
         std::vector<std::vector<int>> loops;
@@ -1020,8 +1021,9 @@ public:
     /// have theirs from splitTriangle (probed next to a cut segment, so the two pieces beside a
     /// segment always get opposite sides). Other touched triangles (around a surface vertex on
     /// the cut) are probed the same way next to a cut edge they have, or else take the side of
-    /// a neighbour across an edge not on the cut. (No global 2-colouring: around the end of a
-    /// partial cut the two sides are one region.)
+    /// a neighbour across an edge not on the cut, preferably one away from the ends of partial
+    /// cuts (groupFans). (No global 2-colouring: around the end of a partial cut the two sides
+    /// are one region.)
     void assignSides() {
         const auto& P = m_s.positions;
         // The touched triangles of every edge, in the order of m_touched (linked lists).
@@ -1104,6 +1106,19 @@ public:
             for (int t : group)
                 setSide(t, sign * colour.get(t));
         }
+        // The rest take the side of a neighbour across an edge not on the cut: first only
+        // across edges away from the ends of partial cuts, where the sides meet (a side read
+        // across such an edge can be the wrong one: on a flat sliver next to the end, both
+        // pieces beside the cut's last segment would get the side of the triangle beyond the
+        // end, and the cut edge would have no - triangle); then across any.
+        propagateSides(false);
+        propagateSides(true);
+    }
+
+    /// Gives every side-0 touched triangle the side of a neighbour across an edge not on the cut
+    /// (breadth first from the triangles with a side); `atEnds`: also across edges with an end of
+    /// a partial cut (m_t.shared, from groupFans) for a corner.
+    void propagateSides(bool atEnds) {
         std::vector<int> queue;
         for (int t : m_touched)
             if (sideOf(t) != 0)
@@ -1112,8 +1127,9 @@ public:
             const int t = queue[i];
             const Tri& q = m_s.triangles[t];
             for (int e = 0; e < 3; ++e) {
-                const std::uint64_t key = undirected(q[e], q[(e + 1) % 3]);
-                if (m_t.cutEdges.contains(key))
+                const int a = q[e], b = q[(e + 1) % 3];
+                const std::uint64_t key = undirected(a, b);
+                if (m_t.cutEdges.contains(key) || (!atEnds && (m_t.shared.has(a) || m_t.shared.has(b))))
                     continue;
                 for (int k = m_edgeLists[*m_t.byEdge.find(key)][0]; k >= 0; k = m_edgeEntries[k][1]) {
                     const int other = m_edgeEntries[k][0];
@@ -1130,32 +1146,33 @@ public:
     int sideOf(int t) const { return m_t.side.get(t); }
     void setSide(int t, int side) { m_t.side.set(t, side); }
 
-    void separateSides() {
-        // The touched triangles of every vertex on the cut (lists reused between cuts).
-        std::vector<int> vertices;
+    /// The touched triangles around every vertex on the cut (every new vertex, split and pierce
+    /// points, and every surface vertex on a polyline; m_fanVertices, sorted, and
+    /// m_incidentLists), grouped by the edges not on the cut that join them (m_fanLabels,
+    /// m_fanCounts). A vertex with one group is an end of a partial cut (the paper's face
+    /// vertex): it goes to m_t.shared. Topology only, so that assignSides can use the ends.
+    void groupFans() {
+        m_fanVertices.clear();
         const auto trianglesAt = [&](int v) -> std::vector<int>& {
-            if (m_t.incident.insert(v, static_cast<int>(vertices.size()))) {
-                if (m_incidentLists.size() <= vertices.size())
+            if (m_t.incident.insert(v, static_cast<int>(m_fanVertices.size()))) {
+                if (m_incidentLists.size() <= m_fanVertices.size())
                     m_incidentLists.emplace_back();
-                m_incidentLists[vertices.size()].clear();
-                vertices.push_back(v);
+                m_incidentLists[m_fanVertices.size()].clear();
+                m_fanVertices.push_back(v);
             }
             return m_incidentLists[m_t.incident.get(v)];
         };
-        // Every new vertex (split and pierce points) and every surface vertex on a polyline.
         for (int t : m_touched)
             for (int v : m_s.triangles[t])
                 if ((v >= m_first && !isInner(v)) || m_t.cutVertices.has(v))
                     trianglesAt(v).push_back(t);
-        // Surface vertices on the cut get their (u, v) on the sweep (for the caps).
-        for (int v : vertices)
-            if (v < m_first)
-                m_edit.setCutUv(v, m_sweep.closestPoint(m_s.positions[v]).uv);
-
-        std::sort(vertices.begin(), vertices.end());
+        std::sort(m_fanVertices.begin(), m_fanVertices.end());
+        m_fanLabels.resize(m_incidentLists.size());
+        m_fanCounts.resize(m_incidentLists.size());
         std::vector<std::pair<int, int>> byNeighbour;  // neighbour vertex -> a triangle with edge (c, it)
-        for (int c : vertices) {
-            const std::vector<int>& tris = m_incidentLists[m_t.incident.get(c)];
+        for (int c : m_fanVertices) {
+            const int fan = m_t.incident.get(c);
+            const std::vector<int>& tris = m_incidentLists[fan];
             UnionFind groups(static_cast<int>(tris.size()));
             byNeighbour.clear();
             for (int i = 0; i < static_cast<int>(tris.size()); ++i) {
@@ -1172,8 +1189,24 @@ public:
                         groups.unite(i, it->second);
                 }
             }
-            std::vector<int> label;
-            const int count = groups.compact(label);
+            m_fanCounts[fan] = groups.compact(m_fanLabels[fan]);
+            if (m_fanCounts[fan] == 1 && m_t.shared.insert(c))
+                m_sharedList.push_back(c);
+        }
+    }
+
+    /// Every vertex on the cut gets one copy per group of its triangles (groupFans); the
+    /// triangles with no side yet take their group's.
+    void separateSides() {
+        // Surface vertices on the cut get their (u, v) on the sweep (for the caps).
+        for (int v : m_fanVertices)
+            if (v < m_first)
+                m_edit.setCutUv(v, m_sweep.closestPoint(m_s.positions[v]).uv);
+        for (int c : m_fanVertices) {
+            const int fan = m_t.incident.get(c);
+            const std::vector<int>& tris = m_incidentLists[fan];
+            const std::vector<int>& label = m_fanLabels[fan];
+            const int count = m_fanCounts[fan];
             std::vector<int> groupSide(count, 0);
             for (int i = 0; i < static_cast<int>(tris.size()); ++i)
                 if (groupSide[label[i]] == 0)
@@ -1181,11 +1214,8 @@ public:
             for (int i = 0; i < static_cast<int>(tris.size()); ++i)
                 if (sideOf(tris[i]) == 0)
                     setSide(tris[i], groupSide[label[i]]);
-            if (count == 1) {
-                if (m_t.shared.insert(c))
-                    m_sharedList.push_back(c);
-                continue;
-            }
+            if (count == 1)
+                continue;  // an end of a partial cut (m_t.shared)
             if (c >= m_first)
                 m_copySide[c - m_first] = groupSide[0];
             for (int g = 1; g < count; ++g) {
@@ -1817,7 +1847,10 @@ public:
     std::vector<int> m_origin;                            ///< per new vertex: the cut vertex it copies
     std::vector<int> m_pieces;                            ///< triangles made by step 4
     std::vector<int> m_touched;                           ///< triangles at cut vertices
-    std::vector<std::vector<int>> m_incidentLists;        ///< separateSides: per vertex on the cut
+    std::vector<int> m_fanVertices;                       ///< groupFans: the vertices on the cut, sorted
+    std::vector<std::vector<int>> m_incidentLists;        ///< groupFans: per vertex on the cut, its triangles
+    std::vector<std::vector<int>> m_fanLabels;            ///< groupFans: per vertex on the cut, group of each
+    std::vector<int> m_fanCounts;                         ///< groupFans: per vertex on the cut, its groups
     std::vector<std::array<int, 3>> m_edgeLists;          ///< assignSides: per edge head, tail, count
     std::vector<std::array<int, 2>> m_edgeEntries;        ///< assignSides: triangle, next entry
     std::vector<int> m_sharedList;                        ///< cut vertices kept as one (face vertices; m_t.shared)

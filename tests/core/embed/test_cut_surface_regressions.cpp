@@ -12,7 +12,10 @@
 //  - "edge (a, b): 2 times, opposite 2 times" (a surface that is no longer 2-manifold, the cut
 //    reporting success): a piece of a surface triangle whose corners are all on the cut,
 //    closed a second time by the cap; a flat triangle along an edge, made on both sides of
-//    it; a chord of a partial cut's caps lying on a surface edge.
+//    it; a chord of a partial cut's caps lying on a surface edge;
+//  - "the cut boundary has no side to close" and "a cut-boundary vertex has no copy on the
+//    other side": the pieces of a flat triangle next to the end of a partial cut taking their
+//    side from beyond the end.
 // After every cut the surface must be closed and 2-manifold, the pieces' volumes must add up to
 // the volume before, and cut faces must carry their (u, v).
 #include "core/embed/cut_surface.h"
@@ -242,6 +245,35 @@ private slots:
         QCOMPARE(cut.faceVertices, 4);   // two ends of each slit
         QCOMPARE(cut.loops, 2);          // one around each slit
         QVERIFY(cut.capTriangles > 0);
+    }
+
+    /// "a cut-boundary vertex has no copy on the other side" (a whole resection) and "the cut
+    /// boundary has no side to close" (here): a partial cut whose last segments cross a flat
+    /// triangle (collinear corners, a sliver an earlier degenerate cut left) next to the cut's
+    /// end. Neither piece of the sliver beside the cut can be probed for its side; both took
+    /// the side of a triangle around the end (where the sides meet), so a cut edge had no -
+    /// triangle. Here the box's top face holds the sliver (A, B, M), M on AB, along y = 2,
+    /// listed before the triangles the cut crosses first, and a V-shaped sweep slits the top
+    /// from the front to just past the sliver (its border y = yEnd inside the triangle beyond).
+    void partialCutEndingPastAFlatTriangle_data() {
+        QTest::addColumn<double>("yEnd");
+        QTest::newRow("border within rounding") << 2.0 + 1e-15;
+        QTest::newRow("border just past") << 2.0 + 1e-9;
+    }
+    void partialCutEndingPastAFlatTriangle() {
+        QFETCH(double, yEnd);
+        TriangleSurface s = literalBox();
+        s.positions.insert(s.positions.end(), {{0, 2, 4}, {3, 2, 4}, {4, 2, 4}});  // A = 8, M = 9, B = 10
+        s.triangles = {{8, 9, 6}, {9, 10, 7}, {9, 7, 6}, {8, 10, 9},  // top, y >= 2 (beyond the end), sliver
+                       {4, 5, 10}, {4, 10, 8},                        // top, y <= 2
+                       {0, 2, 3}, {0, 3, 1}, {0, 1, 5}, {0, 5, 4}, {2, 6, 7}, {2, 7, 3},
+                       {0, 4, 8}, {0, 8, 6}, {0, 6, 2},               // x = 0, A on its top edge
+                       {1, 3, 7}, {1, 7, 10}, {1, 10, 5}};            // x = 4, B on its top edge
+        const SweepSurface sweep =
+            sweepOf({{{1, -1, 5}, {2, -1, 3}, {3, -1, 5}}, {{1, yEnd, 5}, {2, yEnd, 3}, {3, yEnd, 5}}});
+        const SurfaceCut cut = cutAndCheck(s, sweep);
+        QVERIFY(cut.capTriangles > 0);
+        QCOMPARE(pieceCount(s), 1);  // a slit, not a separation
     }
 };
 
