@@ -146,13 +146,13 @@ private:
 
     // Scratch of rebind() and bindNewVertices(), kept between cuts (no per-cut allocation).
     CutSides m_sides;
-    IndexMarks m_pieceSlot;                         ///< changed tet -> its list in m_pieces
-    IndexMarks m_recomputeMark, m_nodeMark;         ///< tets in m_recompute; nodes whose tets are in
+    StampedMarks m_pieceSlot;                         ///< changed tet -> its list in m_pieces
+    StampedMarks m_recomputeMark, m_nodeMark;         ///< tets in m_recompute; nodes whose tets are in
     std::vector<std::vector<int>> m_pieces;
     std::vector<int> m_pieceKeys, m_recompute, m_affected, m_kept, m_likely, m_ring;
     std::vector<std::int8_t> m_ringSides;  ///< bindNewVertices: CutSides::tetSide of m_ring
     std::vector<TetFrame> m_frames;                 ///< of the tets evaluated in this call
-    IndexMarks m_frameSlot;                         ///< tet -> its frame in m_frames
+    StampedMarks m_frameSlot;                         ///< tet -> its frame in m_frames
 };
 
 /// Barycentric coordinates (w0..w3, summing to 1) of p in the tet (current positions).

@@ -8,7 +8,7 @@ void CutSides::begin(const TetMesh& mesh, const CutChanges& changes, const Sweep
     m_mesh = &mesh;
     m_changes = &changes;
     m_sweep = &sweep;
-    for (IndexMarks* m : {&m_tetSides, &m_nodeSides, &m_onCut, &m_pairSlot})
+    for (StampedMarks* m : {&m_tetSides, &m_nodeSides, &m_onCut, &m_pairSlot})
         m->clear();
     for (int n : changes.cutSurfaceNodes)
         m_onCut.set(n, 1);

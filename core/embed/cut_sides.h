@@ -41,13 +41,13 @@ private:
     const CutChanges* m_changes = nullptr;
     const SweepSurface* m_sweep = nullptr;
     // Per cut (begin() clears them):
-    IndexMarks m_tetSides, m_nodeSides;  ///< computed sides
-    IndexMarks m_onCut;                  ///< the cut-surface nodes
+    StampedMarks m_tetSides, m_nodeSides;  ///< computed sides
+    StampedMarks m_onCut;                  ///< the cut-surface nodes
     /// Duplicated-node pairs by node: node -> its slot, CSR of the pairs (ascending) per slot.
-    IndexMarks m_pairSlot;
+    StampedMarks m_pairSlot;
     std::vector<int> m_pairStart, m_pairIndex;
     // Per ring() call:
-    IndexMarks m_ringNode, m_ringTet;
+    StampedMarks m_ringNode, m_ringTet;
     std::vector<int> m_ringNodes, m_pending;
 };
 

@@ -235,14 +235,14 @@ struct SurfaceEdit {
 
 /// The cut's scratch tables (flat_marks.h), cleared at the start of every cut.
 struct SurfaceCutWorkspace::Tables {
-    IndexMarks onSweep, cutVertices, shared, mate, mateOf, side, colour, incident, next, visited;
+    StampedMarks onSweep, cutVertices, shared, mate, mateOf, side, colour, incident, next, visited;
     EdgeTable tested, splits, cutEdges, segmentTriangle, edgeSide, halfEdges, surfaceEdges, byEdge, capEdges;
     void clear(int vertices, int triangles) {
-        for (IndexMarks* m : {&onSweep, &cutVertices, &shared, &mate, &mateOf, &incident, &next, &visited}) {
+        for (StampedMarks* m : {&onSweep, &cutVertices, &shared, &mate, &mateOf, &incident, &next, &visited}) {
             m->clear();
             m->grow(vertices);
         }
-        for (IndexMarks* m : {&side, &colour}) {
+        for (StampedMarks* m : {&side, &colour}) {
             m->clear();
             m->grow(triangles);
         }
@@ -1071,7 +1071,7 @@ public:
         // same) and give each coloured group the sign most of its probes vote for. A group with
         // a contradiction (around the end of a partial cut both sides are one region) keeps its
         // probed sides.
-        IndexMarks& colour = m_t.colour;
+        StampedMarks& colour = m_t.colour;
         std::vector<int> group;
         for (int seed : m_touched) {
             if (colour.has(seed))
@@ -1262,7 +1262,7 @@ public:
             for (int e = 0; e < 3; ++e)
                 m_t.halfEdges.insert(directed(q[e], q[(e + 1) % 3]), 1);
         }
-        IndexMarks& next = m_t.next;  // a -> b for boundary edge a -> b
+        StampedMarks& next = m_t.next;  // a -> b for boundary edge a -> b
         std::vector<int> starts;
         for (int t : tris) {
             const Tri& q = m_s.triangles[t];
@@ -1277,7 +1277,7 @@ public:
             }
         }
         std::sort(starts.begin(), starts.end());
-        IndexMarks& visited = m_t.visited;
+        StampedMarks& visited = m_t.visited;
         for (int start : starts) {
             if (visited.has(start))
                 continue;

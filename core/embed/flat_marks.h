@@ -4,8 +4,10 @@
 // to what it touches, not to the surface:
 //  * EdgeTable: a value per edge key (two vertex indices packed in 64 bits), open addressing
 //    with linear probing;
-//  * IndexMarks: a value per index (vertex, triangle) with "absent" for indices not set since
+//  * StampedMarks: a value per index (vertex, triangle) with "absent" for indices not set since
 //    the last clear (arrays whose untouched pages cost nothing).
+// (core/mesh/index_marks.h and edge_key_table.h serve the tet cut in the same spirit, with a
+// list of set indices instead of stamps; the two were written in parallel and not merged.)
 
 #include <algorithm>
 #include <cstdint>
@@ -110,13 +112,13 @@ private:
 /// written (the stamps zeroed by calloc, so fresh pages are the system's zero pages until used),
 /// so a fresh one (the first cut of a copied surface) costs in proportion to the indices a cut
 /// marks, not to the surface.
-class IndexMarks {
+class StampedMarks {
 public:
-    IndexMarks() = default;
+    StampedMarks() = default;
     /// Scratch, not state: a copy starts empty, an assignment keeps what it has.
-    IndexMarks(const IndexMarks&) {}
-    IndexMarks& operator=(const IndexMarks&) { return *this; }
-    ~IndexMarks() {
+    StampedMarks(const StampedMarks&) {}
+    StampedMarks& operator=(const StampedMarks&) { return *this; }
+    ~StampedMarks() {
         std::free(m_stamp);
         std::free(m_value);
     }
