@@ -1,8 +1,9 @@
 #pragma once
 // Invariants of a cut embedded surface, shared by the surface tests: closed and 2-manifold
 // (every edge in exactly two triangles, once in each direction; every vertex's triangles form
-// one fan), and cut faces carrying their sweep (u, v).
+// one fan), and cut faces carrying their sweep (u, v); and the plane sweeps they cut with.
 #include "core/mesh/triangle_surface.h"
+#include "core/sweep/sweep_surface.h"
 
 #include <QString>
 #include <QStringList>
@@ -75,6 +76,15 @@ inline QString capUvProblems(const TriangleSurface& s) {
         }
     }
     return {};
+}
+
+/// A plane sweep through point p (exactly: p is a vertex of the sweep) with normal roughly n.
+inline bool planeThrough(const Vec3& p, const Vec3& n, double size, SweepSurface& out) {
+    const Vec3 a = n.unitOrthogonal(), b = n.normalized().cross(a);
+    const std::vector<Vec3> start{p - size * a - size * b, p - size * b, p + size * a - size * b};
+    const std::vector<Vec3> middle{p - size * a, p, p + size * a};
+    const std::vector<Vec3> end{p - size * a + size * b, p + size * b, p + size * a + size * b};
+    return SweepSurface::fromCurves({start, middle, end}, out).ok();
 }
 
 } // namespace resect::testing

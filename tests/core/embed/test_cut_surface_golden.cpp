@@ -13,6 +13,9 @@
 #include "core/mesher/samples.h"
 #include "core/sweep/stroke_shapes.h"
 
+#include "surface_checks.h"
+#include "tests/core/fingerprint.h"
+
 #include <QTest>
 
 #include <cinttypes>
@@ -74,23 +77,9 @@ const Golden kGolden[] = {
     {3, 9, 31160, 15746, 0x11164575eda101ceull, 0xb477fe07bcedf0e9ull},
 };
 
-/// FNV-1a over raw bytes.
-struct Hash {
-    std::uint64_t h = 1469598103934665603ull;
-    void add(const void* data, std::size_t bytes) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < bytes; ++i)
-            h = (h ^ p[i]) * 1099511628211ull;
-    }
-};
+using testing::Fnv1a;
+using testing::planeThrough;
 
-bool planeThrough(const Vec3& p, const Vec3& n, double size, SweepSurface& out) {
-    const Vec3 a = n.unitOrthogonal(), b = n.normalized().cross(a);
-    const std::vector<Vec3> start{p - size * a - size * b, p - size * b, p + size * a - size * b};
-    const std::vector<Vec3> middle{p - size * a, p, p + size * a};
-    const std::vector<Vec3> end{p - size * a + size * b, p + size * b, p + size * a + size * b};
-    return SweepSurface::fromCurves({start, middle, end}, out).ok();
-}
 
 } // namespace
 
@@ -142,7 +131,7 @@ private slots:
             SurfaceCut out;
             const Status st = indexed ? cutSurface(s, nullptr, sweep, out, &index, &workspace)
                                       : cutSurface(s, nullptr, sweep, out);
-            Hash topology, geometry;
+            Fnv1a topology, geometry;
             for (const Tri& q : s.triangles)
                 topology.add(q.data(), sizeof(Tri));
             topology.add(s.cutFaces.data(), s.cutFaces.size());

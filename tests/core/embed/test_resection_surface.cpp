@@ -35,14 +35,6 @@ const Inputs& polyp(double scale) {
     return cache.emplace(scale, std::move(in)).first->second;
 }
 
-/// A plane sweep through point p (exactly: p is a vertex of the sweep) with normal roughly n.
-bool planeThrough(const Vec3& p, const Vec3& n, double size, SweepSurface& out) {
-    const Vec3 a = n.unitOrthogonal(), b = n.normalized().cross(a);
-    const std::vector<Vec3> start{p - size * a - size * b, p - size * b, p + size * a - size * b};
-    const std::vector<Vec3> middle{p - size * a, p, p + size * a};
-    const std::vector<Vec3> end{p - size * a + size * b, p + size * b, p + size * a + size * b};
-    return SweepSurface::fromCurves({start, middle, end}, out).ok();
-}
 
 } // namespace
 
@@ -77,7 +69,7 @@ private slots:
                 std::uniform_int_distribution<int> pick(in.surface.vertexCount(), s.vertexCount() - 1);
                 const Vec3 p = s.positions[pick(rng)];
                 std::uniform_real_distribution<double> u(-1, 1);
-                if (!planeThrough(p, Vec3(u(rng), u(rng), 1.5), 20 * scale, sweep))
+                if (!testing::planeThrough(p, Vec3(u(rng), u(rng), 1.5), 20 * scale, sweep))
                     continue;
                 what = "a plane through an earlier cut vertex";
                 ++throughVertices;

@@ -17,6 +17,8 @@
 #include "core/sweep/stroke_shapes.h"
 #include "core/tissue/tissue.h"
 
+#include "tests/core/fingerprint.h"
+
 #include <QTest>
 
 #include <cinttypes>
@@ -39,22 +41,14 @@ struct Fingerprint {
     std::uint64_t marks = 0;     ///< anchored nodes, schemes, cut marks of tets and nodes
 };
 
-/// FNV-1a over raw bytes.
-struct Hash {
-    std::uint64_t h = 1469598103934665603ull;
-    void add(const void* data, std::size_t bytes) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < bytes; ++i)
-            h = (h ^ p[i]) * 1099511628211ull;
-    }
-};
+using testing::Fnv1a;
 
 Fingerprint fingerprintOf(const Tissue& tissue) {
     const TetMesh& m = tissue.mesh();
     Fingerprint f;
     f.tets = m.tetCount();
     f.nodes = m.nodeCount();
-    Hash topology, geometry;
+    Fnv1a topology, geometry;
     for (int t = 0; t < m.tetCount(); ++t)
         topology.add(m.tet(t).data(), sizeof(Tet));
     for (int n = 0; n < m.nodeCount(); ++n) {
@@ -67,11 +61,11 @@ Fingerprint fingerprintOf(const Tissue& tissue) {
     f.geometry = geometry.h;
     const TriangleSurface& s = tissue.surface().surface();
     f.triangles = s.triangleCount();
-    Hash st;
+    Fnv1a st;
     for (const auto& t : s.triangles)
         st.add(t.data(), sizeof(t));
     f.surfaceTopology = st.h;
-    Hash marks;
+    Fnv1a marks;
     marks.add(tissue.anchors().nodes().data(), tissue.anchors().nodes().size() * sizeof(int));
     marks.add(tissue.schemes().data(), tissue.schemes().size() * sizeof(Scheme));
     marks.add(tissue.tetCuts().data(), tissue.tetCuts().size() * sizeof(int));
