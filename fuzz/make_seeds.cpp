@@ -1,7 +1,8 @@
 // fuzz_make_seeds CORPUS_DIR: writes the seed inputs of every fuzz target into
 // CORPUS_DIR/<target>/ (the checked-in fuzz/corpus/ was made with it). Seeds are small
 // valid files, written by the project's own writers where it has one (.vtu, sweeps,
-// surfaces) and by hand otherwise (Gmsh, TetGen, ASCII .vtu through VTK's writer).
+// surfaces, legacy VTK, Medit) and by hand otherwise (Gmsh, TetGen, ASCII .vtu through VTK's
+// writer, legacy VTK 5.1 and mmg-style Medit).
 
 #include "scenario/mesh_io.h"
 #include "scenario/surface_io.h"
@@ -89,6 +90,68 @@ const char* const kTetGen = R"(# five points
 2 2 3 4 5
 )";
 
+// Legacy VTK 5.1 as VTK 9's writer makes it (OFFSETS/CONNECTIVITY, METADATA, a lookup
+// table), with a triangle the reader drops and a point array it skips.
+const char* const kVtk51 = R"(# vtk DataFile Version 5.1
+vtk output
+ASCII
+DATASET UNSTRUCTURED_GRID
+POINTS 5 double
+0 0 0 1 0 0 0 1 0
+0 0 1 1 1 1
+METADATA
+INFORMATION 0
+
+CELLS 4 11
+OFFSETS vtktypeint64
+0 4 8 11
+CONNECTIVITY vtktypeint64
+0 1 2 3 1 2 3 4 0 1 2
+CELL_TYPES 3
+10
+10
+5
+
+CELL_DATA 3
+FIELD FieldData 1
+CellEntityIds 1 3 int
+1 2 0
+POINT_DATA 5
+SCALARS temperature float 1
+LOOKUP_TABLE default
+37 37 37 37 37
+VECTORS velocity double
+0 0 0 1 0 0 0 1 0 0 0 1 1 1 1
+)";
+
+// mmg-style Medit: comments, counts on the keyword's line, corners, ridges, required
+// vertices, boundary triangles and references.
+const char* const kMedit = R"(# mmg3d output
+MeshVersionFormatted 2
+Dimension 3
+Vertices 5
+0 0 0 1
+1 0 0 1
+0 1 0 1
+0 0 1 1
+1 1 1 2
+Corners 1
+1
+Ridges
+1
+1
+RequiredVertices 1 5
+Edges 1
+1 2 1
+Triangles 2
+1 3 2 4
+1 2 4 4
+Tetrahedra 2
+1 2 3 4 1
+2 3 4 5 2
+End
+)";
+
 // A binary little-endian PLY tetrahedron: float coordinates, faces as uchar-counted int lists.
 QByteArray binaryPly() {
     QByteArray b("ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n"
@@ -171,6 +234,11 @@ int main(int argc, char** argv) {
     ok &= !ascii.isEmpty() && writeBytes(file("vtu", "one-tet-ascii.vtu"), ascii);
     ok &= writeBytes(file("msh", "two-tets.msh"), kGmsh);
     ok &= writeBytes(file("tetgen", "two-tets.node-ele"), kTetGen);
+    ok &= check(writeVtkLegacy(file("vtk", "one-tet-binary.vtk").toStdString(), one, true));
+    ok &= check(writeVtkLegacy(file("vtk", "one-tet-ascii.vtk").toStdString(), one, false));
+    ok &= writeBytes(file("vtk", "two-tets-5.1.vtk"), kVtk51);
+    ok &= check(writeMedit(file("medit", "box.mesh").toStdString(), box));
+    ok &= writeBytes(file("medit", "two-tets-mmg.mesh"), kMedit);
 
     // Surfaces: a unit cube with texture coordinates, in every format.
     TriangleSurface cube = makeBox({0, 0, 0}, {1, 1, 1});

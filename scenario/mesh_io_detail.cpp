@@ -6,6 +6,8 @@
 #include "core/mesh/masses.h"
 #include "core/mesh/material.h"
 #include "core/mesh/predicates.h"
+#include "core/mesh/quality.h"
+#include "core/mesh/topology.h"
 
 #include <algorithm>
 #include <cctype>
@@ -133,7 +135,8 @@ bool LineReader::nextContent(std::string_view& line, char comment) {
     return false;
 }
 
-Status finishImportedMesh(const std::string& path, ImportedMesh imported, TetMesh& out) {
+Status finishImportedMesh(const std::string& path, ImportedMesh imported, TetMesh& out,
+                          MeshReadReport* report) {
     std::vector<Vec3>& points = imported.points;
     std::vector<Tet>& tets = imported.tets;
     const auto label = [&](int t) {
@@ -148,12 +151,46 @@ Status finishImportedMesh(const std::string& path, ImportedMesh imported, TetMes
         if (!points[n].allFinite())
             return Status::error(path + ": node " + std::to_string(n) +
                                  " has a non-finite coordinate");
+    // The optional per-node data: one value per point, finite (masses >= 0).
+    const auto checkVectors = [&](const std::vector<Vec3>& values, const char* what) {
+        if (values.empty())
+            return Status::success();
+        if (values.size() != points.size())
+            return Status::error(path + ": " + what + " has " + std::to_string(values.size()) +
+                                 " values, but there are " + std::to_string(points.size()) +
+                                 " nodes");
+        for (std::size_t n = 0; n < values.size(); ++n)
+            if (!values[n].allFinite())
+                return Status::error(path + ": " + what + " of node " + std::to_string(n) +
+                                     " is not finite");
+        return Status::success();
+    };
+    if (Status s = checkVectors(imported.reference, "reference_position"); !s)
+        return s;
+    if (Status s = checkVectors(imported.velocity, "velocity"); !s)
+        return s;
+    if (!imported.mass.empty()) {
+        if (imported.mass.size() != points.size())
+            return Status::error(path + ": mass has " + std::to_string(imported.mass.size()) +
+                                 " values, but there are " + std::to_string(points.size()) +
+                                 " nodes");
+        for (std::size_t n = 0; n < imported.mass.size(); ++n)
+            if (!std::isfinite(imported.mass[n]) || imported.mass[n] < 0)
+                return Status::error(path + ": mass of node " + std::to_string(n) + " is " +
+                                     std::to_string(imported.mass[n]) +
+                                     "; masses must be finite and >= 0");
+    }
+    if (!imported.tetGroup.empty() && imported.tetGroup.size() != tets.size())
+        return Status::error(path + ": group tags for " + std::to_string(imported.tetGroup.size()) +
+                             " of " + std::to_string(tets.size()) + " tetrahedra");
 
-    // Orientation, exact: positive is kept, negative is repaired by swapping two nodes
-    // (which flips the sign of the determinant), zero volume cannot be repaired.
+    // Orientation, exact, in the reference configuration: positive is kept, negative is
+    // repaired by swapping two nodes (which flips the sign of the determinant), zero volume
+    // cannot be repaired.
+    const std::vector<Vec3>& ref = imported.reference.empty() ? points : imported.reference;
     for (std::size_t t = 0; t < tets.size(); ++t) {
         Tet& q = tets[t];
-        const int o = orient3d(points[q[0]], points[q[1]], points[q[2]], points[q[3]]);
+        const int o = orient3d(ref[q[0]], ref[q[1]], ref[q[2]], ref[q[3]]);
         if (o == 0)
             return Status::error(path + ": " + label(static_cast<int>(t)) +
                                  " has zero volume (its four nodes are coplanar)");
@@ -166,22 +203,71 @@ Status finishImportedMesh(const std::string& path, ImportedMesh imported, TetMes
     for (const Tet& q : tets)
         for (int v : q)
             newIndex[v] = 0;
-    std::vector<Vec3> used;
-    used.reserve(points.size());
+    std::vector<int> kept;
+    kept.reserve(points.size());
     for (std::size_t n = 0; n < points.size(); ++n)
         if (newIndex[n] == 0) {
-            newIndex[n] = static_cast<int>(used.size());
-            used.push_back(points[n]);
+            newIndex[n] = static_cast<int>(kept.size());
+            kept.push_back(static_cast<int>(n));
         }
     for (Tet& q : tets)
         for (int& v : q)
             v = newIndex[v];
+    const auto pick = [&](const std::vector<Vec3>& from) {
+        std::vector<Vec3> to(kept.size());
+        for (std::size_t i = 0; i < kept.size(); ++i)
+            to[i] = from[static_cast<std::size_t>(kept[i])];
+        return to;
+    };
 
-    TetMesh mesh = TetMesh::fromArrays(std::move(used), std::move(tets));
-    if (Status s = computeCheckedMasses(path, mesh); !s)
+    TetMesh mesh = TetMesh::fromArrays(pick(ref), std::move(tets));
+    const std::vector<Vec3> current = pick(points);
+    std::copy(current.begin(), current.end(), mesh.positions().begin());
+    if (!imported.velocity.empty()) {
+        const std::vector<Vec3> velocity = pick(imported.velocity);
+        std::copy(velocity.begin(), velocity.end(), mesh.velocities().begin());
+    }
+    if (!imported.mass.empty()) {
+        for (std::size_t i = 0; i < kept.size(); ++i)
+            mesh.masses()[i] = imported.mass[static_cast<std::size_t>(kept[i])];
+    } else if (Status s = computeCheckedMasses(path, mesh); !s) {
         return s;
+    }
     out = std::move(mesh);
+    if (report) {
+        report->tetGroup = std::move(imported.tetGroup);
+        for (MeshReadReport::Group& g : report->groups)
+            if (g.dimension == 3)
+                g.tets = std::count(report->tetGroup.begin(), report->tetGroup.end(), g.tag);
+    }
     return Status::success();
+}
+
+TetAttributes tetAttributes(const TetMesh& mesh) {
+    TetAttributes a;
+    const std::vector<TetQuality> qualities = tetQualities(mesh);
+    a.quality.resize(qualities.size());
+    for (std::size_t t = 0; t < qualities.size(); ++t)
+        a.quality[t] = qualities[t].radiusRatio;
+    Components components = connectedComponents(mesh);
+    a.piece = std::move(components.tetComponent);
+    a.pieceCount = components.count;
+    return a;
+}
+
+Status checkWritableMesh(const std::string& path, const TetMesh& mesh) {
+    const auto n = static_cast<std::size_t>(mesh.nodeCount());
+    if (mesh.positions().size() != n || mesh.velocities().size() != n || mesh.masses().size() != n)
+        return Status::error(path + ": cannot write a mesh whose node arrays differ in size");
+    if (const std::string bad = checkTetIndices(mesh.nodeCount(), mesh.tets()); !bad.empty())
+        return Status::error(path + ": cannot write an invalid mesh: " + bad);
+    return Status::success();
+}
+
+std::string exactText(double value) {
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
 }
 
 Status computeCheckedMasses(const std::string& path, TetMesh& mesh) {

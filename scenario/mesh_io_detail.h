@@ -1,9 +1,10 @@
 #pragma once
 // Private helpers shared by the tet mesh readers (mesh_io.cpp, vtu_io.cpp, gmsh_reader.cpp,
-// tetgen_reader.cpp): file access, a line reader for the text formats, strict number
+// tetgen_io.cpp, vtk_legacy_io.cpp, medit_io.cpp, gmsh_writer.cpp): file access, a line reader for the text formats, strict number
 // parsing and the final validation of imported meshes. Not part of the public API.
 
 #include "core/mesh/tet_mesh.h"
+#include "scenario/mesh_io.h"
 #include "core/status.h"
 
 #include <cstdint>
@@ -56,20 +57,47 @@ private:
     std::int64_t m_totalLines = 0;
 };
 
-/// Nodes and tets as read from an import format (Gmsh, TetGen), before validation.
-/// `tetLabel(t)` names tet t in error messages the way the file does (e.g. "element 17").
+/// Nodes and tets as read from an import format (Gmsh, TetGen, Medit, legacy VTK), before
+/// validation. `tetLabel(t)` names tet t in error messages the way the file does (e.g.
+/// "element 17").
 struct ImportedMesh {
-    std::vector<Vec3> points;
+    std::vector<Vec3> points; ///< as the file gives them: current positions
     std::vector<Tet> tets;
     std::function<std::string(int)> tetLabel;
+    /// Optional per-node data the project's own writers add: empty if the file has none,
+    /// else one value per point. Orientation is judged on `reference` when given.
+    std::vector<Vec3> reference; ///< reference_position
+    std::vector<Vec3> velocity;
+    std::vector<double> mass;    ///< must be finite and >= 0
+    /// Optional per-tet group tag (MeshReadReport::tetGroup): empty, or one per tet.
+    std::vector<std::int64_t> tetGroup;
 };
 
-/// Turns an imported mesh into a TetMesh: checks indices and finiteness, reorders
-/// negatively oriented tets (swaps their last two nodes) and rejects zero-volume ones
-/// (exact orient3d in the reference configuration), drops nodes that no tet uses (keeping
-/// the file's order), and computes lumped masses from Material{}.density.
+/// Turns an imported mesh into a TetMesh: checks indices and finiteness (of the optional
+/// arrays too, and their sizes), reorders negatively oriented tets (swaps their last two
+/// nodes) and rejects zero-volume ones (exact orient3d in the reference configuration),
+/// drops nodes that no tet uses (keeping the file's order), and takes the file's masses or
+/// computes lumped masses from Material{}.density. Fills report->tetGroup from
+/// imported.tetGroup (and the groups' tet counts) if `report` is given.
 /// Errors are prefixed with `path`.
-Status finishImportedMesh(const std::string& path, ImportedMesh imported, TetMesh& out);
+Status finishImportedMesh(const std::string& path, ImportedMesh imported, TetMesh& out,
+                          MeshReadReport* report = nullptr);
+
+/// What every writer carries besides positions: per tet its radius ratio (reference
+/// configuration) and piece (connected component, 0-based), and the number of pieces.
+struct TetAttributes {
+    std::vector<double> quality;
+    std::vector<int> piece;
+    int pieceCount = 0;
+};
+TetAttributes tetAttributes(const TetMesh& mesh);
+
+/// Ok if `mesh` can be written: node arrays of equal size, valid indices.
+/// Errors are prefixed with `path`.
+Status checkWritableMesh(const std::string& path, const TetMesh& mesh);
+
+/// A double as the shortest text that reads back to the same value (std::to_chars).
+std::string exactText(double value);
 
 /// Computes lumped masses from Material{}.density and checks them: every node's mass must
 /// be finite and positive. Finite coordinates can still give a tet volume that overflows

@@ -29,7 +29,7 @@ bool ScenarioRun::allPassed() const {
 
 Status loadTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh& mesh,
                   TriangleSurface& surface, const std::atomic<bool>* cancel,
-                  std::function<void(const MeshingProgress&)> progress) {
+                  std::function<void(const MeshingProgress&)> progress, MeshReadReport* readReport) {
     const std::string where = "tissue '" + tissue.name + "'";
     const Material material = tissue.material.toMaterial();
     TriangleSurface loaded;
@@ -41,7 +41,7 @@ Status loadTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh& m
             return Status::error(where + ": " + s.message());
     }
     if (!tissue.mesh.empty()) {
-        if (Status s = readTetMesh(resolveScenarioPath(scenario.baseDir, tissue.mesh), meshed); !s.ok())
+        if (Status s = readTetMesh(resolveScenarioPath(scenario.baseDir, tissue.mesh), meshed, readReport); !s.ok())
             return Status::error(where + ": " + s.message());
         computeLumpedMasses(meshed, material.density);
     } else {

@@ -4,6 +4,7 @@
 // effects and simulation settings, and the expectations evaluated per tissue.
 
 #include "core/mesher/tetrahedralize.h"
+#include "scenario/mesh_io.h"
 #include "scenario/replay.h"
 #include "scenario/scenario_document.h"
 
@@ -42,11 +43,13 @@ Status planTissue(const Scenario& scenario, const TissueSpec& tissue, ReplayPlan
 /// The first half of planTissue: loads the tissue's surface (if any) and its tet mesh, read
 /// or meshed (masses from its material). Meshing stops with an error when *cancel turns
 /// true; `progress` (optional) is called on the calling thread as each meshing stage starts
-/// (MeshingOptions::progress; not called for a tissue read from a tet mesh). On failure the
-/// outputs are unchanged.
+/// (MeshingOptions::progress; not called for a tissue read from a tet mesh). `readReport`
+/// (optional) gets what reading a tet mesh noticed (mesh_io.h: dropped elements, groups).
+/// On failure the outputs are unchanged.
 Status loadTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh& mesh,
                   TriangleSurface& surface, const std::atomic<bool>* cancel = nullptr,
-                  std::function<void(const MeshingProgress&)> progress = {});
+                  std::function<void(const MeshingProgress&)> progress = {},
+                  MeshReadReport* readReport = nullptr);
 /// The second half: the plan for an already loaded tissue (the studio plans on the mesh it
 /// has cut; fixed nodes are those of `mesh` inside the fixed regions).
 Status planLoadedTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh mesh, TriangleSurface surface,

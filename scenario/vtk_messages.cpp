@@ -1,9 +1,12 @@
 #include "scenario/vtk_messages.h"
 
+#include <vtkAlgorithm.h>
+#include <vtkExecutive.h>
 #include <vtkLogger.h>
 #include <vtkObjectFactory.h>
 #include <vtkOutputWindow.h>
 #include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
 #include <cctype>
@@ -112,6 +115,19 @@ int ScopedVtkMessageCapture::errorCount() const {
 
 std::string ScopedVtkMessageCapture::firstError() const {
     return m_state->window->first();
+}
+
+Status updateGridReader(vtkAlgorithm* reader, const std::string& path, const std::string& what,
+                        vtkUnstructuredGrid*& grid) {
+    ScopedVtkMessageCapture messages;
+    const bool updated = reader->GetExecutive()->Update() != 0;
+    grid = vtkUnstructuredGrid::SafeDownCast(reader->GetOutputDataObject(0));
+    if (!updated || messages.errorCount() > 0 || !grid)
+        return Status::error(path + ": not a readable " + what + " (" +
+                             (messages.firstError().empty() ? std::string("unknown VTK error")
+                                                            : messages.firstError()) +
+                             ")");
+    return Status::success();
 }
 
 } // namespace resect::detail

@@ -9,8 +9,13 @@
 // output window is replaced by one that records messages and vtkLogger's stderr output is
 // switched off; both are restored when the capture ends.
 
+#include "core/status.h"
+
 #include <memory>
 #include <string>
+
+class vtkAlgorithm;
+class vtkUnstructuredGrid;
 
 namespace resect::detail {
 
@@ -35,5 +40,12 @@ private:
     struct State;
     std::unique_ptr<State> m_state;
 };
+
+/// Runs a grid reader's pipeline with its messages captured: its output grid in `grid` if
+/// the pipeline succeeded and reported no error, else "PATH: not a readable WHAT (VTK's
+/// first error)". The pipeline's result is checked as well as the messages: with
+/// vtkObject::GlobalWarningDisplay switched off somewhere, VTK reports nothing.
+Status updateGridReader(vtkAlgorithm* reader, const std::string& path, const std::string& what,
+                        vtkUnstructuredGrid*& grid);
 
 } // namespace resect::detail

@@ -8,6 +8,7 @@
 #include "scenario/mesh_io.h"
 #include "scenario/mesh_io_detail.h"
 #include "scenario/vtk_convert.h"
+#include "scenario/vtk_legacy_guard.h"
 #include "scenario/vtk_messages.h"
 #include "scenario/vtk_xml_guard.h"
 
@@ -37,43 +38,6 @@ namespace resect {
 namespace {
 
 using namespace detail;
-
-/// The point data array `name`, checked: nullptr in `array` if absent; error if present
-/// but not numeric, with the wrong number of components or of tuples.
-Status pointArray(const std::string& path, vtkPointData* pd, const char* name, int components,
-                  vtkIdType tuples, vtkDataArray*& array) {
-    array = nullptr;
-    vtkAbstractArray* abstract = pd->GetAbstractArray(name);
-    if (!abstract)
-        return Status::success();
-    array = vtkDataArray::SafeDownCast(abstract);
-    if (!array)
-        return Status::error(path + ": point array '" + name + "' is not numeric");
-    if (array->GetNumberOfComponents() != components)
-        return Status::error(path + ": point array '" + name + "' has " +
-                             std::to_string(array->GetNumberOfComponents()) +
-                             " components, expected " + std::to_string(components));
-    if (array->GetNumberOfTuples() != tuples)
-        return Status::error(path + ": point array '" + name + "' has " +
-                             std::to_string(array->GetNumberOfTuples()) +
-                             " values, but there are " + std::to_string(tuples) + " points");
-    return Status::success();
-}
-
-/// Copies a 3-component array into Vec3s, rejecting non-finite values.
-Status readVectors(const std::string& path, vtkDataArray* array, const char* what,
-                   std::vector<Vec3>& out) {
-    const vtkIdType n = array->GetNumberOfTuples();
-    out.resize(static_cast<std::size_t>(n));
-    for (vtkIdType i = 0; i < n; ++i) {
-        Vec3 v(array->GetComponent(i, 0), array->GetComponent(i, 1), array->GetComponent(i, 2));
-        if (!v.allFinite())
-            return Status::error(path + ": " + what + " of point " + std::to_string(i) +
-                                 " is not finite");
-        out[static_cast<std::size_t>(i)] = v;
-    }
-    return Status::success();
-}
 
 /// Reads the tets from the grid's cells, checking cell types and the cell array layout.
 Status readTets(const std::string& path, vtkUnstructuredGrid* grid, std::vector<Tet>& tets) {
@@ -121,18 +85,11 @@ Status readVtuImpl(const std::string& path, TetMesh& out) {
     if (Status s = checkVtkXmlFile(path); !s)
         return s;
 
-    ScopedVtkMessageCapture messages;
     auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
     reader->SetFileName(path.c_str());
-    // The pipeline's result as well as the messages: with vtkObject::GlobalWarningDisplay
-    // switched off somewhere, VTK reports nothing.
-    const bool updated = reader->GetExecutive()->Update() != 0;
-    vtkUnstructuredGrid* grid = reader->GetOutput();
-    if (!updated || messages.errorCount() > 0 || !grid)
-        return Status::error(path + ": not a readable VTK unstructured grid (" +
-                             (messages.firstError().empty() ? std::string("unknown VTK error")
-                                                            : messages.firstError()) +
-                             ")");
+    vtkUnstructuredGrid* grid = nullptr;
+    if (Status s = updateGridReader(reader, path, "VTK unstructured grid", grid); !s)
+        return s;
 
     const vtkIdType pointCount = grid->GetNumberOfPoints();
     if (pointCount == 0 || !grid->GetPoints())
@@ -147,25 +104,25 @@ Status readVtuImpl(const std::string& path, TetMesh& out) {
         return Status::error(path + ": " + bad);
 
     std::vector<Vec3> positions;
-    if (Status s = readVectors(path, grid->GetPoints()->GetData(), "the position", positions); !s)
+    if (Status s = vtkArrayToVectors(path, grid->GetPoints()->GetData(), "the position", positions); !s)
         return s;
 
     vtkPointData* pd = grid->GetPointData();
     vtkDataArray *refArray = nullptr, *massArray = nullptr, *velArray = nullptr;
-    if (Status s = pointArray(path, pd, "reference_position", 3, pointCount, refArray); !s)
+    if (Status s = vtkArrayOfShape(path, pd, "point array", "reference_position", 3, pointCount, refArray); !s)
         return s;
-    if (Status s = pointArray(path, pd, "mass", 1, pointCount, massArray); !s)
+    if (Status s = vtkArrayOfShape(path, pd, "point array", "mass", 1, pointCount, massArray); !s)
         return s;
-    if (Status s = pointArray(path, pd, "velocity", 3, pointCount, velArray); !s)
+    if (Status s = vtkArrayOfShape(path, pd, "point array", "velocity", 3, pointCount, velArray); !s)
         return s;
 
     std::vector<Vec3> reference = positions;
     if (refArray)
-        if (Status s = readVectors(path, refArray, "reference_position", reference); !s)
+        if (Status s = vtkArrayToVectors(path, refArray, "reference_position", reference); !s)
             return s;
     std::vector<Vec3> velocity(static_cast<std::size_t>(pointCount), Vec3::Zero());
     if (velArray)
-        if (Status s = readVectors(path, velArray, "velocity", velocity); !s)
+        if (Status s = vtkArrayToVectors(path, velArray, "velocity", velocity); !s)
             return s;
     std::vector<double> mass;
     if (massArray) {
@@ -229,7 +186,9 @@ Status writeVtuImpl(const std::string& path, const TetMesh& mesh) {
 
 } // namespace
 
-Status readVtu(const std::string& path, TetMesh& out) {
+Status readVtu(const std::string& path, TetMesh& out, MeshReadReport* report) {
+    if (report)
+        report->format = "VTK XML unstructured grid";
     return detail::guarded(path, "reading", [&] { return readVtuImpl(path, out); });
 }
 

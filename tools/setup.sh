@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages Resect Studio needs (only those missing), then configures
-# and builds the release preset. Sourced by tools/run.sh and tools/test.sh; safe to re-run.
+# and builds the release preset. Called by tools/run.sh and tools/test.sh; safe to re-run.
+# With --tests (tools/test.sh) it also installs what only the tests use: the gmsh binary,
+# which writes the Gmsh files the readers are tested on and re-saves ours (issue 21).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -10,6 +12,9 @@ PACKAGES=(
   libvtk9-dev libeigen3-dev libcgal-dev libassimp-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0
 )
+if [[ "${1:-}" == "--tests" ]]; then
+  PACKAGES+=(gmsh)
+fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -3,5 +3,5 @@
 # start their own Xvfb through xvfb-run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash tools/setup.sh
+bash tools/setup.sh --tests
 ctest --test-dir build/release --output-on-failure -j "$(nproc)" "$@"

@@ -1107,25 +1107,36 @@
 <context>
     <name>resect::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+336"/>
+        <location filename="../app/studio/main_window.cpp" line="+349"/>
         <location line="+11"/>
-        <location line="+169"/>
+        <location line="+213"/>
         <location line="+59"/>
         <source>Resect Studio</source>
         <translation>Resect Studio</translation>
     </message>
     <message>
-        <location line="-372"/>
+        <location line="-418"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location line="-20"/>
+        <location line="-28"/>
         <source>Simulation paused while a cut is previewed: apply or discard the cut, then play.</source>
         <translation>Simulation pausiert, solange ein Schnitt in der Vorschau ist: Wenden Sie den Schnitt an oder verwerfen Sie ihn, dann abspielen.</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+13"/>
+        <source>Exported the mesh to %1</source>
+        <translation>Netz nach %1 exportiert</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+322"/>
+        <source>The mesh was not exported.</source>
+        <translation>Das Netz wurde nicht exportiert.</translation>
+    </message>
+    <message>
+        <location line="-308"/>
         <source>&amp;New from sample</source>
         <translation>&amp;Neu aus Beispiel</translation>
     </message>
@@ -1168,6 +1179,11 @@
         <location line="+3"/>
         <source>&amp;Export for the trainer...</source>
         <translation>&amp;Export für den Trainer...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export &amp;mesh as...</source>
+        <translation>&amp;Netz exportieren als...</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1295,7 +1311,12 @@
         <translation>Das Szenario konnte nicht erstellt werden.</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+34"/>
+        <source>Mesh read: %1</source>
+        <translation>Netz gelesen: %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <location line="+10"/>
         <source>The scenario was not saved.</source>
         <translation>Das Szenario wurde nicht gespeichert.</translation>
@@ -1313,38 +1334,29 @@
     </message>
     <message>
         <location line="+1"/>
+        <location line="+8"/>
         <source>Scenarios (*.json)</source>
         <translation>Szenarien (*.json)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-1"/>
         <source>Open scenario or anatomy</source>
         <translation>Szenario oder Anatomie öffnen</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Scenarios (*.json);;Tet meshes (*.vtu *.msh *.node *.ele);;Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;All files (*)</source>
-        <translation>Szenarien (*.json);;Tetraedernetze (*.vtu *.msh *.node *.ele);;Oberflächen (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;Alle Dateien (*)</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Import anatomy</source>
         <translation>Anatomie importieren</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;Tet meshes (*.vtu *.msh *.node *.ele);;All files (*)</source>
-        <translation>Oberflächen (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;Tetraedernetze (*.vtu *.msh *.node *.ele);;Alle Dateien (*)</translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <location line="+7"/>
-        <location line="+37"/>
+        <location line="+73"/>
         <source>The scenario was not exported.</source>
         <translation>Das Szenario wurde nicht exportiert.</translation>
     </message>
     <message>
-        <location line="-44"/>
+        <location line="-80"/>
         <source>An export is already running.</source>
         <translation>Ein Export läuft bereits.</translation>
     </message>
@@ -1364,7 +1376,7 @@
         <translation>Export für den Trainer: leeren Ordner wählen oder anlegen</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+115"/>
         <source>1 piece</source>
         <translation>1 Teil</translation>
     </message>
@@ -1390,7 +1402,42 @@
         </translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-84"/>
+        <source>Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;All files (*)</source>
+        <translation>Oberflächen (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx)</source>
+        <translation>Oberflächen (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>Export mesh as</source>
+        <translation>Netz exportieren als</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>There is no tet mesh on show.</source>
+        <translation>Es wird kein Tetraedernetz angezeigt.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>A mesh export is already running.</source>
+        <translation>Ein Netzexport läuft bereits.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Exporting the mesh to %1...</source>
+        <translation>Netz wird nach %1 exportiert...</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Export finished</source>
         <translation>Export abgeschlossen</translation>
     </message>
@@ -1461,7 +1508,7 @@
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="-451"/>
+        <location line="-505"/>
         <source>The tissue could not be loaded.</source>
         <translation>Das Gewebe konnte nicht geladen werden.</translation>
     </message>
@@ -1476,9 +1523,17 @@
         <translation>Die letzte Änderung wurde rückgängig gemacht: %1</translation>
     </message>
     <message>
-        <location line="+263"/>
+        <location line="+273"/>
         <source>Could not open %1.</source>
         <translation>%1 konnte nicht geöffnet werden.</translation>
+    </message>
+</context>
+<context>
+    <name>resect::MeshFiles</name>
+    <message>
+        <location filename="../widgets/mesh_files.cpp" line="+33"/>
+        <source>Tet meshes (%1)</source>
+        <translation>Tetraedernetze (%1)</translation>
     </message>
 </context>
 <context>
@@ -2177,12 +2232,12 @@
     </message>
     <message>
         <location line="+66"/>
-        <location line="+355"/>
+        <location line="+358"/>
         <source>Opening was cancelled.</source>
         <translation>Das Öffnen wurde abgebrochen.</translation>
     </message>
     <message>
-        <location line="-262"/>
+        <location line="-265"/>
         <source>Internal error: %1</source>
         <translation>Interner Fehler: %1</translation>
     </message>
@@ -2197,7 +2252,7 @@
         <translation>das Szenario hat kein Gewebe</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+93"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2240,7 +2295,7 @@
 <context>
     <name>resect::VtkViewport</name>
     <message>
-        <location filename="../widgets/vtk_viewport.cpp" line="+109"/>
+        <location filename="../widgets/vtk_viewport.cpp" line="+114"/>
         <source>3-D view unavailable: %1.</source>
         <translation>3-D-Ansicht nicht verfügbar: %1.</translation>
     </message>

@@ -324,7 +324,8 @@ TissueSession::compute(const Request& request, std::shared_ptr<const TissueState
     if (request.reload || !base) {
         TetMesh mesh;
         TriangleSurface surface;
-        if (Status s = loadTissue(scenario, tissue, mesh, surface, &cancel, progress); !s.ok()) {
+        MeshReadReport read;
+        if (Status s = loadTissue(scenario, tissue, mesh, surface, &cancel, progress, &read); !s.ok()) {
             result.error = QString::fromStdString(s.message());
             result.loadFailed = true;
             result.cancelled = cancel.load();
@@ -332,6 +333,8 @@ TissueSession::compute(const Request& request, std::shared_ptr<const TissueState
         }
         auto state = std::make_shared<TissueState>();
         state->tissueName = name;
+        if (!read.dropped.empty() || !read.notes.empty())
+            state->readNote = QString::fromStdString(read.summary());
         if (Status s = makeBaseTissue(scenario, std::move(mesh), std::move(surface), state->tissue); !s.ok()) {
             result.error = QString::fromStdString("tissue '" + tissue.name + "': " + s.message());
             result.loadFailed = true;

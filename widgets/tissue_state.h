@@ -52,6 +52,9 @@ double worstRadiusRatio(const TetMesh& mesh);
 struct TissueState {
     Tissue tissue;       ///< mesh, spatial index, surface (following the tets), schemes
     AppliedCuts applied; ///< what was cut into `tissue` since the base
+    /// What reading the tissue's tet mesh dropped or noticed (MeshReadReport::summary), empty
+    /// if nothing: the studio tells the author once the tissue is shown.
+    QString readNote;
     QualitySummary quality;
     double stableDt = 0;         ///< s, stableTimeStep of the mass-spring model
     int pieces = 0;              ///< pieces cut: the tissue's connected components and its resected chips

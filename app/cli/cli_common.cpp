@@ -4,6 +4,8 @@
 
 #include <QJsonDocument>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -190,6 +192,46 @@ void requireDistinct(const std::string& input, const std::string& out) {
     std::error_code ec;
     if (std::filesystem::exists(out, ec) && std::filesystem::equivalent(input, out, ec))
         badInput("--out " + out + " is the input file; refusing to overwrite an input");
+}
+
+MeshOutput meshOutput(const std::string& path, const std::optional<std::string>& formatKey,
+                      const std::string& option) {
+    MeshOutput out{path, MeshFormat::Vtu};
+    if (Status s = chooseMeshWriteFormat(path, formatKey ? *formatKey : std::string(), out.format); !s)
+        badInput(option + ": " + s.message());
+    return out;
+}
+
+std::vector<std::string> meshFiles(const std::string& path) {
+    const std::filesystem::path p(path);
+    std::string ext = p.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext != ".node" && ext != ".ele")
+        return {path};
+    std::filesystem::path other = p;
+    other.replace_extension(ext == ".node" ? ".ele" : ".node");
+    return {path, other.string()};
+}
+
+void requireDistinctMesh(const std::string& input, const std::string& out) {
+    for (const std::string& in : meshFiles(input))
+        for (const std::string& o : meshFiles(out)) {
+            std::error_code ec;
+            if (std::filesystem::exists(o, ec) && std::filesystem::equivalent(in, o, ec))
+                badInput("--out " + out + " would overwrite the input file " + in +
+                         "; refusing to overwrite an input");
+        }
+}
+
+void writeMeshOutput(const MeshOutput& out, const TetMesh& mesh) {
+    requireOk(writeTetMesh(out.path, mesh, out.format));
+}
+
+void printReadNotes(const std::string& path, const MeshReadReport& report) {
+    if (report.dropped.empty() && report.notes.empty())
+        return;
+    std::fprintf(stderr, "note: %s: %s\n", path.c_str(), report.summary().c_str());
 }
 
 } // namespace resect::cli

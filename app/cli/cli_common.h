@@ -3,6 +3,7 @@
 // codes (0 success, 2 bad input, 1 internal failure) and JSON output.
 
 #include "core/status.h"
+#include "scenario/mesh_io.h"
 
 #include <QJsonObject>
 
@@ -59,7 +60,28 @@ Status writeJson(const std::string& path, const QJsonObject& object);
 /// Bad input if `out` names the same existing file as `input` (never overwrite inputs).
 void requireDistinct(const std::string& input, const std::string& out);
 
+/// A tet mesh to write: its path and format.
+struct MeshOutput {
+    std::string path;
+    MeshFormat format = MeshFormat::Vtu;
+};
+/// Checks a tet mesh output before any work: the format is `formatKey`'s (--mesh-format) or
+/// the extension's default; bad input (exit 2) names `option` and what is wrong (no or an
+/// unknown extension, a format that does not fit it).
+MeshOutput meshOutput(const std::string& path, const std::optional<std::string>& formatKey,
+                      const std::string& option = "--out");
+/// The files a tet mesh path stands for: itself, and for TetGen (.node/.ele) both of the pair.
+std::vector<std::string> meshFiles(const std::string& path);
+/// requireDistinct for tet meshes: no file of the output (a TetGen pair: both) may be a file
+/// of the input.
+void requireDistinctMesh(const std::string& input, const std::string& out);
+/// Writes the mesh; a failure is bad input naming the file (requireOk).
+void writeMeshOutput(const MeshOutput& out, const TetMesh& mesh);
+/// One line on stderr ("note: ...") if the read dropped elements or merged duplicates.
+void printReadNotes(const std::string& path, const MeshReadReport& report);
+
 int runInfo(Args args);
+int runConvert(Args args);
 int runMesh(Args args);
 int runDemo(Args args);
 int runCut(Args args);

@@ -1,4 +1,4 @@
-// resect cut MESH --sweep S.json [--sweep S2.json ...] --out OUT.vtu [--report R.json]
+// resect cut MESH --sweep S.json [--sweep S2.json ...] --out OUT [--mesh-format KEY] [--report R.json]
 //            [--method hybrid|subdivision] [--triangulation enhanced|standard] [--d 0.2]
 //            [--snap | --no-snap] [--relax-steps N] [--w-spring W] [--w-particle W]
 //            [--surface HI_RES --surface-out OUT.obj] [--improve on|off]
@@ -20,12 +20,14 @@
 #include <QJsonArray>
 
 #include <cstdio>
+#include <filesystem>
 
 namespace resect::cli {
 
 int runCut(Args args) {
     const std::vector<std::string> sweepFiles = args.options("--sweep");
-    const std::string out = args.requiredOption("--out");
+    const std::optional<std::string> meshFormat = args.option("--mesh-format");
+    const MeshOutput out = meshOutput(args.requiredOption("--out"), meshFormat);
     const auto report = args.option("--report");
     CutOptions options;
     const std::string method = args.option("--method").value_or("hybrid");
@@ -93,19 +95,29 @@ int runCut(Args args) {
         badInput("expected exactly one MESH file");
     if (sweepFiles.empty())
         badInput("--sweep is required (one or more sweep files)");
-    requireDistinct(files[0], out);
+    requireDistinctMesh(files[0], out.path);
     if (report)
         requireDistinct(files[0], *report);
     if (surfaceIn)
         requireDistinct(*surfaceIn, *surfaceOut);
+    std::optional<MeshOutput> chipsOutput;
     if (chipsOut) {
-        requireDistinct(files[0], *chipsOut);
-        if (*chipsOut == out)
-            badInput("--resected-out and --out name the same file");
+        // --mesh-format names the variant of --out's extension; the chips file takes it when
+        // it has the same extension, else its own extension's default.
+        const bool sameExtension =
+            std::filesystem::path(*chipsOut).extension() == std::filesystem::path(out.path).extension();
+        chipsOutput = meshOutput(*chipsOut, sameExtension ? meshFormat : std::nullopt, "--resected-out");
+        requireDistinctMesh(files[0], *chipsOut);
+        for (const std::string& a : meshFiles(*chipsOut))
+            for (const std::string& b : meshFiles(out.path))
+                if (a == b)
+                    badInput("--resected-out and --out name the same file");
     }
 
     TetMesh mesh;
-    requireOk(readTetMesh(files[0], mesh));
+    MeshReadReport read;
+    requireOk(readTetMesh(files[0], mesh, &read));
+    printReadNotes(files[0], read);
     std::vector<SweepSurface> sweeps(sweepFiles.size());
     for (std::size_t i = 0; i < sweepFiles.size(); ++i)
         requireOk(readSweep(sweepFiles[i], sweeps[i]));
@@ -141,7 +153,7 @@ int runCut(Args args) {
         removedTets += cut.removedTets;
         improveMs += cut.improveMs;
     }
-    requireOk(writeVtu(out, tissue.mesh()));
+    writeMeshOutput(out, tissue.mesh());
     if (chipsOut) {
         // All chips in one file, where they are.
         std::vector<Vec3> positions;
@@ -158,7 +170,7 @@ int runCut(Args args) {
         }
         TetMesh chips = TetMesh::fromArrays(std::move(positions), std::move(tets));
         computeLumpedMasses(chips, material.density);
-        requireOk(writeVtu(*chipsOut, chips));
+        writeMeshOutput(*chipsOutput, chips);
     }
     if (surfaceIn) {
         tissue.updateSurface();  // the surface deformed with the tets
@@ -212,7 +224,7 @@ int runCut(Args args) {
     if (box && resected == ResectedPieces::Remove)
         std::printf(", %d resected (volume %.4g mm^3, mass %.4g g)", static_cast<int>(tissue.chips().size()),
                     tissue.resectedVolume(), tissue.resectedMass());
-    std::printf(" -> %s\n", out.c_str());
+    std::printf(" -> %s\n", out.path.c_str());
     return kOk;
 }
 

@@ -1,4 +1,4 @@
-// resect mesh (SURFACE | --sample NAME) --out OUT.vtu [--edge-length L] [--repair] [--seed N]
+// resect mesh (SURFACE | --sample NAME) --out OUT [--mesh-format KEY] [--edge-length L] [--repair] [--seed N]
 //     [--min-dihedral DEG] [--protect-features [--feature-angle DEG]] [--no-volume-match]
 //     [--report R.json]
 #include "app/cli/cli_common.h"
@@ -46,7 +46,8 @@ QJsonObject meshingReportJson(const MeshingReport& r, const QualitySummary& q, s
 
 int runMesh(Args args) {
     const auto sample = args.option("--sample");
-    const std::string out = args.requiredOption("--out");
+    const MeshOutput output = meshOutput(args.requiredOption("--out"), args.option("--mesh-format"));
+    const std::string& out = output.path;
     AnatomyMeshing options;
     if (auto l = args.number("--edge-length", 0.0, 1e300)) {
         if (!(*l > 0))
@@ -76,7 +77,7 @@ int runMesh(Args args) {
 
     const std::string source = sample ? "sample:" + *sample : files[0];
     if (!sample)
-        requireDistinct(files[0], out);
+        requireDistinctMesh(files[0], out);
     if (reportPath) {
         std::error_code ec;
         if (std::filesystem::weakly_canonical(out, ec) == std::filesystem::weakly_canonical(*reportPath, ec))
@@ -92,7 +93,7 @@ int runMesh(Args args) {
     requireOk(meshAnatomy(surface, options, mesh, &log, &report));
     if (!log.empty())
         std::fputs(log.c_str(), stderr);
-    requireOk(writeVtu(out, mesh));
+    writeMeshOutput(output, mesh);
     const QualitySummary q = summarizeQuality(mesh);
     std::printf("%s: %d nodes, %d tets (edge length %.4g), worst dihedral %.2f deg, min radius "
                 "ratio %.4f, volume %.6g (surface %.6g, %+.2f %%), %.2f s -> %s\n",

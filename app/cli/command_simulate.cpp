@@ -1,4 +1,4 @@
-// resect simulate MESH --steps N --out OUT.vtu [--report R.json] [--dt S]
+// resect simulate MESH --steps N --out OUT [--mesh-format KEY] [--report R.json] [--dt S]
 //     [--integrator explicit|implicit|symplectic-euler|velocity-verlet|projective-dynamics|backward-euler]
 //     [--iterations N]
 //     [--effects deformation,gravity,...] [--fix-box x0 y0 z0 x1 y1 z1]
@@ -112,7 +112,8 @@ int runSimulate(Args args) {
     const auto toolRadius = args.number("--tool-radius", 0.0, 1e12);
     const int threads = args.integer("--threads", 1, 256).value_or(0);
     const auto iterations = args.integer("--iterations", 1, 1000);
-    const std::string out = args.requiredOption("--out");
+    const MeshOutput output = meshOutput(args.requiredOption("--out"), args.option("--mesh-format"));
+    const std::string& out = output.path;
     const auto reportPath = args.option("--report");
     const auto files = args.positionals();
     args.finish();
@@ -170,7 +171,7 @@ int runSimulate(Args args) {
     } else if (requested("tool-contact")) {
         badInput("--effects: 'tool-contact' needs --tool x,y,z,... and --tool-radius R");
     }
-    requireDistinct(files[0], out);
+    requireDistinctMesh(files[0], out);
     if (reportPath) {
         requireDistinct(files[0], *reportPath);
         if (*reportPath == out)
@@ -178,7 +179,9 @@ int runSimulate(Args args) {
     }
 
     TetMesh mesh;
-    requireOk(readTetMesh(files[0], mesh));
+    MeshReadReport read;
+    requireOk(readTetMesh(files[0], mesh, &read));
+    printReadNotes(files[0], read);
     std::vector<Chip> chips;
     const double massBefore = sumOfMasses(mesh);
     if (box && resected != ResectedPieces::Keep) {
@@ -314,7 +317,7 @@ int runSimulate(Args args) {
                 scene.addTet(q);
             }
         }
-    if (Status s = writeVtu(out, scene); !s.ok())
+    if (Status s = writeTetMesh(out, scene, output.format); !s.ok())
         throw CliError{kInternal, s.message()};
     std::printf(
         "%s: %d steps of %.4g s (%s, stable %.4g s) in %.3g s wall (%.3gx real time), max speed %.4g mm/s, %d inverted -> %s\n",

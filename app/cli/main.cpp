@@ -13,8 +13,11 @@ namespace {
 const char* kUsage = R"(usage: resect COMMAND [options]
 
 commands:
-  info MESH                         JSON summary of a tet mesh (.vtu, .msh, .node/.ele)
-  mesh (SURFACE | --sample NAME) --out OUT.vtu [--edge-length L] [--repair] [--seed N]
+  info MESH                         JSON summary of a tet mesh: format, counts, quality,
+                                    dropped elements, physical groups
+  convert MESH --out OUT [--mesh-format KEY]
+                                    a tet mesh into another format
+  mesh (SURFACE | --sample NAME) --out OUT [--edge-length L] [--repair] [--seed N]
       [--min-dihedral 10] [--protect-features [--feature-angle 60]] [--no-volume-match]
       [--report R.json]
                                     tetrahedralize a closed surface (any format assimp
@@ -26,7 +29,7 @@ commands:
                                     edges kept only with --protect-features (CAD input)
   demo [--out DIR] [--sample NAME]  headless demo: mesh a sample, print its quality,
                                     write the mesh, surface and summary to DIR
-  cut MESH --sweep S.json [--sweep S2.json ...] --out OUT.vtu [--report R.json]
+  cut MESH --sweep S.json [--sweep S2.json ...] --out OUT [--report R.json]
       [--method hybrid|subdivision] [--triangulation enhanced|standard] [--d 0.2] [--snap|--no-snap]
       [--relax-steps N] [--w-spring W] [--w-particle W] [--surface HI_RES --surface-out OUT.obj]
       [--improve on|off] [--improve-quality Q] [--improve-short-edge S]
@@ -36,7 +39,7 @@ commands:
                                     the tets around each cut are improved (collapses,
                                     smoothing) unless --improve off; with --fix-box, pieces
                                     left without a node in the box are resected (removed)
-  simulate MESH --steps N --out OUT.vtu [--report R.json] [--dt S]
+  simulate MESH --steps N --out OUT [--report R.json] [--dt S]
       [--integrator explicit|implicit|velocity-verlet] [--effects deformation,gravity,...]
       [--fix-box x0 y0 z0 x1 y1 z1] [--damping C] [--tool x,y,z,... --tool-radius R]
       [--threads N] [--resected rigid|remove|deformable]
@@ -77,6 +80,12 @@ commands:
                                     loop scoops and boxes of --sizes tets; refactorisation
                                     after a cut, peak memory: DIR/realtime.csv, .md, .png
 
+tet mesh files (MESH, OUT): .vtu (VTK XML), .msh (Gmsh 2.2 / 4.1, ASCII / binary), .vtk
+(legacy VTK), .mesh (Medit), .node/.ele (TetGen); read by extension and header, written
+by OUT's extension in its default format, or in --mesh-format KEY: vtu, msh41 (.msh
+default), msh41-binary, msh22, msh22-binary, vtk (binary, .vtk default), vtk-ascii,
+medit, tetgen. An unknown extension is refused before any work.
+
 exit codes: 0 success, 2 bad input, 1 internal failure
 )";
 
@@ -95,6 +104,8 @@ int main(int argc, char** argv) {
     try {
         if (command == "info")
             return runInfo(Args(args));
+        if (command == "convert")
+            return runConvert(Args(args));
         if (command == "mesh")
             return runMesh(Args(args));
         if (command == "demo")

@@ -105,7 +105,7 @@ int main(int argc, char* argv[]) {
         QStringLiteral("name"));
     const QCommandLineOption openOption(
         QStringLiteral("open"),
-        QStringLiteral("Open a tet mesh (.vtu, .msh, .node) or a surface to mesh."),
+        QStringLiteral("Open a scenario (.json), a tet mesh (.vtu, .msh, .vtk, .mesh, .node/.ele) or a surface to mesh."),
         QStringLiteral("file"));
     const QCommandLineOption screenshotOption(
         QStringLiteral("screenshot"),

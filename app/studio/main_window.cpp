@@ -10,6 +10,7 @@
 #include "widgets/fixed_region_editor.h"
 #include "widgets/fixed_region_tool.h"
 #include "widgets/language.h"
+#include "widgets/mesh_files.h"
 #include "widgets/quality_panel.h"
 #include "widgets/scenario_document.h"
 #include "widgets/shown_tissue.h"
@@ -29,6 +30,7 @@
 #include <QCloseEvent>
 #include <QDesktopServices>
 #include <QDockWidget>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QKeySequence>
@@ -105,6 +107,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_session, &TissueSession::busyChanged, this, &MainWindow::onBusyChanged);
     connect(m_session, &TissueSession::loadProgress, this, &MainWindow::onLoadProgress);
     connect(m_session, &TissueSession::baseChanged, this, &MainWindow::updateStatus);
+    connect(m_session, &TissueSession::baseChanged, this, &MainWindow::showReadNote);
     connect(m_session, &TissueSession::currentChanged, this, &MainWindow::updateStatus);
     // Every new document is framed when the session publishes its tissue (baseChanged).
     connect(m_document, &ScenarioDocument::documentReset, this, &MainWindow::resetViews);
@@ -190,6 +193,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     m_export = new ExportRunner(this);
     connect(m_export, &ExportRunner::finished, this, &MainWindow::onExportFinished);
+    m_meshWriter = new MeshFileWriter(this);
+    connect(m_meshWriter, &MeshFileWriter::finished, this, [this](bool ok, const QString& message) {
+        if (ok)
+            statusBar()->showMessage(tr("Exported the mesh to %1").arg(message), 10000);
+        else
+            showError(tr("The mesh was not exported."), message);
+        emit meshExported(ok, message);
+    });
 
     m_document->setAutosaveInterval(60'000);
     updateTitle();
@@ -224,6 +235,8 @@ void MainWindow::createActions() {
     file->addSeparator();
     QAction* exportAction = file->addAction(tr("&Export for the trainer..."), this, &MainWindow::exportDialog);
     exportAction->setObjectName(QStringLiteral("exportPackage"));
+    QAction* exportMeshAction = file->addAction(tr("Export &mesh as..."), this, &MainWindow::exportMeshDialog);
+    exportMeshAction->setObjectName(QStringLiteral("exportMesh"));
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
@@ -397,6 +410,14 @@ void MainWindow::resetViews() {
     m_accuracyPanel->clearResults();
     m_qualityPanel->inspector()->clear();
     statusBar()->clearMessage();
+    // An opened document's tissue is adopted before this reset: say what its file left out.
+    showReadNote();
+}
+
+void MainWindow::showReadNote() {
+    // What reading the tet mesh left out (a mixed-element file keeps its tets).
+    if (const auto base = m_session->base(); base && !base->readNote.isEmpty())
+        statusBar()->showMessage(tr("Mesh read: %1").arg(base->readNote), 30000);
 }
 
 void MainWindow::updateApplyAction() {
@@ -437,8 +458,8 @@ void MainWindow::saveAsDialog() {
 void MainWindow::openFileDialog() {
     const QString path = QFileDialog::getOpenFileName(
         this, tr("Open scenario or anatomy"), QString(),
-        tr("Scenarios (*.json);;Tet meshes (*.vtu *.msh *.node *.ele);;"
-           "Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;All files (*)"));
+        tr("Scenarios (*.json)") + QStringLiteral(";;") + tetMeshOpenFilters() + QStringLiteral(";;") +
+            tr("Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;All files (*)"));
     if (!path.isEmpty())
         openFile(path);
 }
@@ -446,8 +467,8 @@ void MainWindow::openFileDialog() {
 void MainWindow::importAnatomyDialog() {
     const QString path = QFileDialog::getOpenFileName(
         this, tr("Import anatomy"), QString(),
-        tr("Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx);;"
-           "Tet meshes (*.vtu *.msh *.node *.ele);;All files (*)"));
+        tr("Surfaces (*.obj *.stl *.ply *.off *.glb *.gltf *.dae *.3ds *.fbx)") + QStringLiteral(";;") +
+            tetMeshOpenFilters() + QStringLiteral(";;") + tr("All files (*)"));
     if (path.isEmpty() || !maybeSave())
         return;
     QString error;
@@ -481,6 +502,42 @@ void MainWindow::exportDialog() {
         QFileDialog::ShowDirsOnly | QFileDialog::DontUseNativeDialog);
     if (!dir.isEmpty())
         exportPackage(dir, false);
+}
+
+void MainWindow::exportMeshDialog() {
+    // Qt's own dialog: the chosen filter names the format (several share .msh and .vtk).
+    QFileDialog dialog(this, tr("Export mesh as"));
+    dialog.setObjectName(QStringLiteral("exportMeshDialog"));
+    dialog.setAcceptMode(QFileDialog::AcceptSave);
+    dialog.setOption(QFileDialog::DontUseNativeDialog);
+    dialog.setNameFilters(tetMeshSaveFilters());
+    if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
+        return;
+    const std::optional<MeshFormat> format = formatOfSaveFilter(dialog.selectedNameFilter());
+    if (!format)
+        return;
+    exportMesh(withMeshExtension(dialog.selectedFiles().front(), *format), *format);
+}
+
+bool MainWindow::exportMesh(const QString& path, MeshFormat format) {
+    const QString title = tr("The mesh was not exported.");
+    const TetMesh* shown = m_shown->mesh();
+    if (!shown) {
+        showError(title, tr("There is no tet mesh on show."));
+        return false;
+    }
+    MeshFormat checked{};
+    const std::string key(meshFormatInfo(format).key);
+    if (Status s = chooseMeshWriteFormat(QFile::encodeName(path).toStdString(), key, checked); !s) {
+        showError(title, QString::fromStdString(s.message()));
+        return false;
+    }
+    if (!m_meshWriter->start(std::make_shared<const TetMesh>(*shown), path, format)) {
+        showError(title, tr("A mesh export is already running."));
+        return false;
+    }
+    statusBar()->showMessage(tr("Exporting the mesh to %1...").arg(path));
+    return true;
 }
 
 void MainWindow::onExportFinished(bool ok, const QString& message, const QStringList& files) {

@@ -8,6 +8,7 @@
 // document's edits.
 
 #include "core/mesher/samples.h"
+#include "scenario/mesh_io.h"
 
 #include <QMainWindow>
 #include <QMessageBox>
@@ -32,6 +33,7 @@ class ExportRunner;
 class QualityPanel;
 class ScenarioDocument;
 class ShownTissue;
+class MeshFileWriter;
 class SimulationController;
 class SimulationPanel;
 class TissueSession;
@@ -62,6 +64,11 @@ public:
     /// False if it could not start.
     bool exportPackage(const QString& outDir, bool force = false);
     ExportRunner& exportRunner() { return *m_export; }
+    /// Writes the tet mesh on show (ShownTissue::mesh: the tissue after the document's cuts,
+    /// the preview or the simulated tissue, whatever the viewport draws) to `path` in
+    /// `format` on a worker thread; meshExported() reports. False, with an error shown, if
+    /// there is no mesh, the path does not fit the format, or a write is running.
+    bool exportMesh(const QString& path, MeshFormat format);
 
     bool isLoading() const;
     VtkViewport* viewport() const { return m_viewport; }
@@ -94,6 +101,8 @@ signals:
     void loadFailed(const QString& message);
     /// An export ended; `files` are the package's files (absolute paths) when it succeeded.
     void exportFinished(bool ok, const QString& message, const QStringList& files);
+    /// A mesh export ended: ok, `message` is the file written; else why not.
+    void meshExported(bool ok, const QString& message);
     /// An error was reported to the user (shown in a box unless dialogs are off).
     void errorReported(const QString& message);
 
@@ -109,11 +118,14 @@ private:
     void importAnatomyDialog();
     void saveAsDialog();
     void exportDialog();
+    void exportMeshDialog();
     void onExportFinished(bool ok, const QString& message, const QStringList& files);
     void newFromSample(const QString& name);
     void onOpenFailed(const QString& message);
     /// A new document is shown: the views drop what belonged to the previous one.
     void resetViews();
+    /// Shows what reading the loaded tissue's tet mesh left out, if anything.
+    void showReadNote();
     void updateApplyAction();
     void showError(const QString& title, const QString& message);
     void updateTitle();
@@ -139,6 +151,7 @@ private:
     QualityPanel* m_qualityPanel = nullptr;
     AccuracyPanel* m_accuracyPanel = nullptr;
     ExportRunner* m_export = nullptr;
+    MeshFileWriter* m_meshWriter = nullptr;
     QLabel* m_statusLabel = nullptr;
     QProgressDialog* m_progress = nullptr;
     QMenu* m_recentMenu = nullptr;

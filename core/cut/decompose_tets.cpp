@@ -407,7 +407,8 @@ Status Decomposer::cone(const std::vector<SideTri>& tris, std::vector<Tet>& tets
     std::sort(candidates.begin(), candidates.end());
     int best = -1, bestCount = std::numeric_limits<int>::max();
     double bestQuality = -1;
-    for (const auto& [count, v] : candidates) {
+    for (const auto& [count, candidate] : candidates) {
+        const int v = candidate; // (a structured binding cannot be captured by clang 14's lambdas)
         if (m_options.apexByQuality ? false : count > bestCount)
             break;
         // Every tet of the cone positive in both configurations (exact, and cheap)...

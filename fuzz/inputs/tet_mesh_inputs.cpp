@@ -4,6 +4,8 @@
 //   msh     Gmsh 4.1 ASCII
 //   tetgen  TetGen .node/.ele: the input is the .node file, then a line "@@ele@@", then the
 //           .ele file (no separator: an empty .ele file)
+//   vtk     legacy VTK (VTK's reader behind the project's pre-flight check)
+//   medit   Medit .mesh
 
 #include "fuzz/fuzz_inputs.h"
 
@@ -39,6 +41,17 @@ Outcome mshInput(std::span<const std::uint8_t> input) {
     return readMesh(path, {path}, true);
 }
 
+Outcome vtkInput(std::span<const std::uint8_t> input) {
+    const std::string path = writeScratchFile("fuzz.vtk", input);
+    // Like .vtu, the file may carry masses, and zero masses are accepted from files.
+    return readMesh(path, {path}, false);
+}
+
+Outcome meditInput(std::span<const std::uint8_t> input) {
+    const std::string path = writeScratchFile("fuzz.mesh", input);
+    return readMesh(path, {path}, true);
+}
+
 constexpr std::string_view kTetGenSeparator = "\n@@ele@@\n";
 
 Outcome tetgenInput(std::span<const std::uint8_t> input) {
@@ -57,5 +70,7 @@ Outcome tetgenInput(std::span<const std::uint8_t> input) {
 RESECT_FUZZ_TARGET(vtu, vtuInput);
 RESECT_FUZZ_TARGET(msh, mshInput);
 RESECT_FUZZ_TARGET(tetgen, tetgenInput);
+RESECT_FUZZ_TARGET(vtk, vtkInput);
+RESECT_FUZZ_TARGET(medit, meditInput);
 
 } // namespace resect::fuzz

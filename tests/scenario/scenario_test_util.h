@@ -66,6 +66,19 @@ private:
     int m_saved = -1;
 };
 
+/// The same nodes (reference and current positions, velocities, masses) and tets in the same
+/// order, every double bit for bit.
+inline bool sameMesh(const TetMesh& a, const TetMesh& b) {
+    if (a.nodeCount() != b.nodeCount() || a.tets() != b.tets())
+        return false;
+    for (int n = 0; n < a.nodeCount(); ++n)
+        if (a.referencePositions()[n] != b.referencePositions()[n] ||
+            a.positions()[n] != b.positions()[n] || a.velocities()[n] != b.velocities()[n] ||
+            a.masses()[n] != b.masses()[n])
+            return false;
+    return true;
+}
+
 /// Three positively oriented tets in two pieces: tets 0 and 1 share the face (1, 2, 3);
 /// tet 2 is a separate unit corner tet at x = 5. Current positions are moved away from the
 /// reference, and velocities and masses are values that need all 17 digits.

@@ -17,6 +17,8 @@
 #include "widgets/fixed_region_editor.h"
 #include "widgets/fixed_region_tool.h"
 #include "widgets/language.h"
+#include "widgets/mesh_files.h"
+#include "scenario/mesh_io.h"
 #include "widgets/quality_curve.h"
 #include "widgets/quality_panel.h"
 #include "widgets/quality_summary_table.h"
@@ -37,6 +39,8 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QTimer>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -261,6 +265,97 @@ class TestStudioMainWindow : public QObject {
     QTemporaryDir m_dir;
 
 private slots:
+    void exportMeshAsEveryFormat() {
+        // Issue 21: File > Export mesh as... writes the mesh on show in every format, and
+        // the studio opens what it wrote.
+        Studio s;
+        QVERIFY(s.load());
+        const TetMesh* shown = s.window.shownTissue().mesh();
+        QVERIFY(shown);
+        const int tets = shown->tetCount();
+        for (const MeshFormatInfo& f : meshFormats()) {
+            const QString key = QString::fromUtf8(f.key.data(), f.key.size());
+            const QString path = withMeshExtension(m_dir.filePath(QStringLiteral("shown-") + key), f.format);
+            QSignalSpy exported(&s.window, &MainWindow::meshExported);
+            QVERIFY2(s.window.exportMesh(path, f.format), qPrintable(key));
+            QVERIFY(exported.wait(kWaitMs));
+            QVERIFY2(exported.first().at(0).toBool(), qPrintable(exported.first().at(1).toString()));
+            TetMesh back;
+            QVERIFY2(readTetMesh(QFile::encodeName(path).toStdString(), back).ok(), qPrintable(path));
+            QCOMPARE(back.tetCount(), tets);
+        }
+        // A path that does not fit the format is refused with an error, nothing written.
+        QSignalSpy errors(&s.window, &MainWindow::errorReported);
+        QVERIFY(!s.window.exportMesh(m_dir.filePath(QStringLiteral("wrong.vtu")), MeshFormat::Msh22));
+        QCOMPARE(errors.count(), 1);
+        QVERIFY(!QFile::exists(m_dir.filePath(QStringLiteral("wrong.vtu"))));
+        // The studio opens a Gmsh file it wrote.
+        Studio other;
+        QVERIFY(other.open(m_dir.filePath(QStringLiteral("shown-msh22-binary.msh"))));
+        QCOMPARE(other.tets(), tets);
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+        other.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    void openingAMixedFileSaysWhatWasDropped() {
+        // Issue 21: a file with triangles beside its tets opens with its tets, and the status
+        // bar says what was left out.
+        const QString path = m_dir.filePath(QStringLiteral("mixed.msh"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n"
+                "5 1 1 1\n$EndNodes\n$Elements\n3\n1 2 2 7 1 1 2 3\n2 4 2 7 1 1 2 3 4\n3 4 2 7 1 2 3 4 5\n"
+                "$EndElements\n");
+        f.close();
+        Studio s;
+        QVERIFY(s.open(path));
+        QCOMPARE(s.tets(), 2);
+        const QString message = s.window.statusBar()->currentMessage();
+        QVERIFY2(message.contains(QStringLiteral("dropped 1 element")) && message.contains(QStringLiteral("triangle")),
+                 qPrintable(message));
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
+    void exportMeshDialogChoosesTheFormatByName() {
+        // Driven as a user does: File > Export mesh as..., pick "Gmsh 2.2 binary", type a
+        // name without extension, accept.
+        Studio s;
+        QVERIFY(s.load());
+        QAction* action = s.action("exportMesh");
+        QVERIFY(action);
+        const QString base = m_dir.filePath(QStringLiteral("dialog-liver"));
+        bool sawDialog = false;
+        QStringList filters;
+        QTimer::singleShot(0, &s.window, [&] {
+            auto* dialog = s.window.findChild<QFileDialog*>(QStringLiteral("exportMeshDialog"));
+            if (!dialog)
+                return;
+            sawDialog = true;
+            filters = dialog->nameFilters();
+            dialog->selectNameFilter(QStringLiteral("Gmsh 2.2 binary (*.msh)"));
+            dialog->selectFile(base);
+            static_cast<QDialog*>(dialog)->accept(); // QFileDialog's own accept, as OK does
+        });
+        QSignalSpy exported(&s.window, &MainWindow::meshExported);
+        action->trigger();
+        QVERIFY(sawDialog);
+        QCOMPARE(filters, tetMeshSaveFilters());
+        QVERIFY(filters.contains(QStringLiteral("Medit (*.mesh)")));
+        QVERIFY(exported.wait(kWaitMs));
+        QVERIFY2(exported.first().at(0).toBool(), qPrintable(exported.first().at(1).toString()));
+        QFile written(base + QStringLiteral(".msh"));
+        QVERIFY(written.open(QIODevice::ReadOnly));
+        QVERIFY(written.read(24).startsWith("$MeshFormat\n2.2 1 8"));
+        // Open and Import list every readable extension.
+        for (const char* ext : {"*.vtu", "*.msh", "*.vtk", "*.mesh", "*.node", "*.ele"})
+            QVERIFY2(tetMeshOpenFilter().contains(QLatin1String(ext)), ext);
+        const QStringList open = tetMeshOpenFilters().split(QStringLiteral(";;"));
+        QCOMPARE(open.size(), 6);
+        QVERIFY(open.contains(QStringLiteral("Gmsh 2.2 and 4.1, ASCII and binary (*.msh)")));
+        QVERIFY(open.contains(QStringLiteral("TetGen (*.node *.ele)")));
+        s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
+    }
+
     void initTestCase() {
         QVERIFY(m_dir.isValid());
         // Settings and autosaves go to the test's folder, never the user's.
