@@ -381,7 +381,10 @@ Status assimpExport(const std::string& path, const aiScene& scene, const char* f
 Status exportGltfText(const std::string& path, const aiScene& scene, const std::string& tmpPath) {
     const fs::path target(path);
     const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    std::string pattern = (folder / ("." + target.stem().string() + ".tmp-XXXXXX")).string();
+    std::string hidden(1, '.'); // (not "." + string&&: GCC 12 warns -Wrestrict on it)
+    hidden += target.stem().string();
+    hidden += ".tmp-XXXXXX";
+    std::string pattern = (folder / hidden).string();
     if (!mkdtemp(pattern.data()))
         return Status::error(path + ": cannot create a temporary folder in " + folder.string());
     const fs::path privateDir(pattern);

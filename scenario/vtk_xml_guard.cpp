@@ -79,7 +79,8 @@ struct StartTag {
 };
 std::vector<StartTag> startTags(std::string_view xml, std::string_view name) {
     std::vector<StartTag> tags;
-    const std::string open = "<" + std::string(name);
+    std::string open(1, '<'); // (not "<" + std::string(name): GCC 12 warns -Wrestrict on it)
+    open += name;
     for (std::size_t at = xml.find(open); at != std::string_view::npos;
          at = xml.find(open, at + 1)) {
         const std::size_t after = at + open.size();
