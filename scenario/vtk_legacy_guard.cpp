@@ -5,6 +5,8 @@
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
 #include <array>
@@ -756,6 +758,34 @@ Status vtkArrayToVectors(const std::string& path, vtkDataArray* array, const cha
         values[static_cast<std::size_t>(i)] = v;
     }
     out = std::move(values);
+    return Status::success();
+}
+
+Status gridNodeData(const std::string& path, vtkUnstructuredGrid* grid, std::vector<Vec3>& reference,
+                    std::vector<double>& mass, std::vector<Vec3>& velocity) {
+    vtkPointData* pd = grid->GetPointData();
+    const vtkIdType n = grid->GetNumberOfPoints();
+    vtkDataArray *refArray = nullptr, *massArray = nullptr, *velArray = nullptr;
+    if (Status s = vtkArrayOfShape(path, pd, "point array", "reference_position", 3, n, refArray); !s)
+        return s;
+    if (Status s = vtkArrayOfShape(path, pd, "point array", "mass", 1, n, massArray); !s)
+        return s;
+    if (Status s = vtkArrayOfShape(path, pd, "point array", "velocity", 3, n, velArray); !s)
+        return s;
+    reference.clear();
+    mass.clear();
+    velocity.clear();
+    if (refArray)
+        if (Status s = vtkArrayToVectors(path, refArray, "reference_position", reference); !s)
+            return s;
+    if (velArray)
+        if (Status s = vtkArrayToVectors(path, velArray, "velocity", velocity); !s)
+            return s;
+    if (massArray) {
+        mass.resize(static_cast<std::size_t>(n));
+        for (vtkIdType i = 0; i < n; ++i)
+            mass[static_cast<std::size_t>(i)] = massArray->GetComponent(i, 0);
+    }
     return Status::success();
 }
 

@@ -18,6 +18,7 @@
 
 class vtkDataArray;
 class vtkFieldData;
+class vtkUnstructuredGrid;
 
 namespace resect::detail {
 
@@ -60,5 +61,12 @@ Status vtkArrayOfShape(const std::string& path, vtkFieldData* data, const char* 
 /// array in errors, e.g. "reference_position").
 Status vtkArrayToVectors(const std::string& path, vtkDataArray* array, const char* what,
                          std::vector<Vec3>& out);
+
+/// The point data the project's writers add to a grid (.vtu and .vtk): reference_position,
+/// mass and velocity, each checked for its shape (vtkArrayOfShape) and, for the vectors,
+/// finiteness (vtkArrayToVectors); a vector is left empty where the grid has no such array.
+/// Masses are copied as they are (callers check them).
+Status gridNodeData(const std::string& path, vtkUnstructuredGrid* grid, std::vector<Vec3>& reference,
+                    std::vector<double>& mass, std::vector<Vec3>& velocity);
 
 } // namespace resect::detail

@@ -112,31 +112,6 @@ Status gridTets(const std::string& path, vtkUnstructuredGrid* grid, ImportedMesh
     return Status::success();
 }
 
-/// Point data reference_position, mass and velocity, where present.
-Status pointData(const std::string& path, vtkUnstructuredGrid* grid, ImportedMesh& imported) {
-    vtkPointData* pd = grid->GetPointData();
-    const vtkIdType n = grid->GetNumberOfPoints();
-    vtkDataArray *ref = nullptr, *mass = nullptr, *vel = nullptr;
-    if (Status s = vtkArrayOfShape(path, pd, "point array", "reference_position", 3, n, ref); !s)
-        return s;
-    if (Status s = vtkArrayOfShape(path, pd, "point array", "mass", 1, n, mass); !s)
-        return s;
-    if (Status s = vtkArrayOfShape(path, pd, "point array", "velocity", 3, n, vel); !s)
-        return s;
-    if (ref)
-        if (Status s = vtkArrayToVectors(path, ref, "reference_position", imported.reference); !s)
-            return s;
-    if (vel)
-        if (Status s = vtkArrayToVectors(path, vel, "velocity", imported.velocity); !s)
-            return s;
-    if (mass) {
-        imported.mass.resize(static_cast<std::size_t>(n));
-        for (vtkIdType i = 0; i < n; ++i)
-            imported.mass[static_cast<std::size_t>(i)] = mass->GetComponent(i, 0);
-    }
-    return Status::success();
-}
-
 /// Volume groups from the first integer cell array of gmsh:physical, CellEntityIds and
 /// piece (whose tags are piece + 1, as the Medit and TetGen writers number them).
 Status cellGroups(const std::string& path, vtkUnstructuredGrid* grid,
@@ -206,7 +181,7 @@ Status readImpl(const std::string& path, TetMesh& out, MeshReadReport* report) {
     std::vector<vtkIdType> cellOf;
     if (Status s = gridTets(path, grid, imported, cellOf, local); !s)
         return s;
-    if (Status s = pointData(path, grid, imported); !s)
+    if (Status s = gridNodeData(path, grid, imported.reference, imported.mass, imported.velocity); !s)
         return s;
     if (Status s = cellGroups(path, grid, cellOf, imported, local); !s)
         return s;

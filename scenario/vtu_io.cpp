@@ -107,34 +107,18 @@ Status readVtuImpl(const std::string& path, TetMesh& out) {
     if (Status s = vtkArrayToVectors(path, grid->GetPoints()->GetData(), "the position", positions); !s)
         return s;
 
-    vtkPointData* pd = grid->GetPointData();
-    vtkDataArray *refArray = nullptr, *massArray = nullptr, *velArray = nullptr;
-    if (Status s = vtkArrayOfShape(path, pd, "point array", "reference_position", 3, pointCount, refArray); !s)
-        return s;
-    if (Status s = vtkArrayOfShape(path, pd, "point array", "mass", 1, pointCount, massArray); !s)
-        return s;
-    if (Status s = vtkArrayOfShape(path, pd, "point array", "velocity", 3, pointCount, velArray); !s)
-        return s;
-
-    std::vector<Vec3> reference = positions;
-    if (refArray)
-        if (Status s = vtkArrayToVectors(path, refArray, "reference_position", reference); !s)
-            return s;
-    std::vector<Vec3> velocity(static_cast<std::size_t>(pointCount), Vec3::Zero());
-    if (velArray)
-        if (Status s = vtkArrayToVectors(path, velArray, "velocity", velocity); !s)
-            return s;
+    std::vector<Vec3> reference, velocity;
     std::vector<double> mass;
-    if (massArray) {
-        mass.resize(static_cast<std::size_t>(pointCount));
-        for (vtkIdType i = 0; i < pointCount; ++i) {
-            const double m = massArray->GetComponent(i, 0);
-            if (!std::isfinite(m) || m < 0)
-                return Status::error(path + ": mass of point " + std::to_string(i) + " is " +
-                                     std::to_string(m) + "; masses must be finite and >= 0");
-            mass[static_cast<std::size_t>(i)] = m;
-        }
-    }
+    if (Status s = gridNodeData(path, grid, reference, mass, velocity); !s)
+        return s;
+    if (reference.empty())
+        reference = positions;
+    if (velocity.empty())
+        velocity.assign(static_cast<std::size_t>(pointCount), Vec3::Zero());
+    for (std::size_t i = 0; i < mass.size(); ++i)
+        if (!std::isfinite(mass[i]) || mass[i] < 0)
+            return Status::error(path + ": mass of point " + std::to_string(i) + " is " +
+                                 std::to_string(mass[i]) + "; masses must be finite and >= 0");
 
     // DESIGN.md: tets are positively oriented in the reference configuration (exact test).
     for (std::size_t t = 0; t < tets.size(); ++t) {
@@ -150,7 +134,7 @@ Status readVtuImpl(const std::string& path, TetMesh& out) {
     TetMesh mesh = TetMesh::fromArrays(std::move(reference), std::move(tets));
     std::copy(positions.begin(), positions.end(), mesh.positions().begin());
     std::copy(velocity.begin(), velocity.end(), mesh.velocities().begin());
-    if (massArray)
+    if (!mass.empty())
         std::copy(mass.begin(), mass.end(), mesh.masses().begin());
     else if (Status s = computeCheckedMasses(path, mesh); !s)
         return s;
