@@ -4,6 +4,8 @@
 #include "core/mesh/predicates.h"
 #include "core/mesh/quality.h"
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -42,6 +44,36 @@ double pointTriangleDistance(const Vec3& p, const Vec3& a, const Vec3& b, const 
     return (p - (a + ab * (vb * denom) + ac * (vc * denom))).norm();
 }
 
+Vec3 nearestToZeroInHull(const std::vector<Vec3>& g) {
+    // Over every subset, the point of its affine hull nearest to zero, kept where its weights
+    // are all non-negative; the nearest of those.
+    if (g.empty() || g.size() > 4)
+        return Vec3::Zero();
+    const int k = static_cast<int>(g.size());
+    Vec3 best = g.front();
+    for (int mask = 1; mask < (1 << k); ++mask) {
+        int set[4] = {0, 0, 0, 0}, size = 0;
+        for (int i = 0; i < k; ++i)
+            if (mask & (1 << i))
+                set[size++] = i;
+        Vec3 candidate = g[set[0]];
+        if (size > 1) {
+            const int n = size - 1;
+            Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 3> a(3, n);
+            for (int j = 0; j < n; ++j)
+                a.col(j) = g[set[j + 1]] - g[set[0]];
+            const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1> t =
+                (a.transpose() * a).ldlt().solve(-a.transpose() * g[set[0]]);
+            if (!t.allFinite() || (t.array() < -1e-12).any() || t.sum() > 1 + 1e-12)
+                continue;
+            candidate = g[set[0]] + a * t;
+        }
+        if (candidate.squaredNorm() < best.squaredNorm())
+            best = candidate;
+    }
+    return best;
+}
+
 ImproveRegion improveRegion(const TetMesh& mesh, const std::vector<int>& seeds, const std::vector<int>& fixedNodes,
                             int rings) {
     ImproveRegion region;
@@ -76,6 +108,9 @@ namespace {
 
 constexpr int kOmega = -1;  // the virtual vertex that closes the boundary (link condition)
 constexpr int kSmoothingIterations = 40;  // ascent steps per node and sweep
+// Smoothing raises together the tets within this of the worst radius ratio (at most kMaxActive).
+constexpr double kActiveRatio = 0.02;
+constexpr std::size_t kMaxActive = 4;
 
 /// The tet q with node v placed at p (reference positions otherwise).
 std::array<Vec3, 4> cornersWith(const TetMesh& m, const Tet& q, int v, const Vec3& p, bool current) {
@@ -989,6 +1024,9 @@ private:
                     neighbours.push_back(u);
         std::sort(neighbours.begin(), neighbours.end());
         neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+        // On the boundary, the volume gradient's direction (set below): ascents go across it.
+        bool boundary = false;
+        Vec3 normal = Vec3::Zero();
         // (`known`: the star's worst ratio at p if known, else negative.)
         const auto score = [&](const Vec3& p, Vec3* ascent, double known = -1) {
             int wi = 0;
@@ -1005,13 +1043,36 @@ private:
                     }
             if (ascent) {
                 if (ratio <= edge || nearest < 0) {
-                    // Gradient of the worst tet's ratio (central differences).
-                    const double h = 1e-4 * (m.ref(star[wi][0]) - m.ref(star[wi][1])).norm();
-                    for (int k = 0; k < 3; ++k) {
-                        Vec3 e = Vec3::Zero();
-                        e[k] = h;
-                        (*ascent)[k] = ratioWith(m, star[wi], v, p + e) - ratioWith(m, star[wi], v, p - e);
+                    // The gradients (central differences) of the tets within kActiveRatio of the
+                    // worst, at most kMaxActive of them, across the volume gradient on the
+                    // boundary; the ascent is the point of their convex hull nearest to zero,
+                    // the direction that raises them all at once (Klingner & Shewchuk). With
+                    // the worst tet's gradient alone, the search stops where two tets tie.
+                    std::vector<std::pair<double, int>> near;
+                    for (std::size_t i = 0; i < star.size(); ++i)
+                        if (const double q = ratioWith(m, star[i], v, p); q <= worstHere + kActiveRatio)
+                            near.emplace_back(q, static_cast<int>(i));
+                    std::sort(near.begin(), near.end());
+                    if (near.empty())
+                        near.emplace_back(worstHere, wi);
+                    if (near.size() > kMaxActive)
+                        near.resize(kMaxActive);
+                    std::vector<Vec3> gradients;
+                    for (const auto& [q, i] : near) {
+                        const double h = 1e-4 * (m.ref(star[i][0]) - m.ref(star[i][1])).norm();
+                        Vec3 g;
+                        for (int k = 0; k < 3; ++k) {
+                            Vec3 e = Vec3::Zero();
+                            e[k] = h;
+                            g[k] = ratioWith(m, star[i], v, p + e) - ratioWith(m, star[i], v, p - e);
+                        }
+                        if (boundary)
+                            g -= g.dot(normal) * normal;
+                        gradients.push_back(g);
                     }
+                    *ascent = nearestToZeroInHull(gradients);
+                    if (!(ascent->norm() > 1e-9 * gradients.front().norm()))
+                        *ascent = gradients.front();
                 } else {
                     *ascent = p - m.ref(nearest);  // lengthen the shortest edge
                 }
@@ -1025,7 +1086,7 @@ private:
         if (worst >= 1)
             return false;
         const std::vector<Face> faces = boundaryFacesAt(star, v);
-        const bool boundary = !faces.empty();
+        boundary = !faces.empty();
         Vec3 gradient = Vec3::Zero();  // of the volume of the star, in the node's position
         double tolerance = 0;
         if (boundary) {
@@ -1038,7 +1099,8 @@ private:
                 return false;
             tolerance = o.maxDeviation * meanEdgeOf(faces);
         }
-        const Vec3 normal = boundary ? Vec3(gradient.normalized()) : Vec3::Zero();
+        if (boundary)
+            normal = gradient.normalized();
         double shortest = std::numeric_limits<double>::infinity();
         for (const Tet& q : star)
             for (const auto& e : kTetEdges)

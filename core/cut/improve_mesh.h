@@ -22,8 +22,10 @@
 //    improves.
 //  * Smoothing. A node whose worst tet is below `badRatio` or whose shortest edge is below
 //    `shortEdge` moves to raise the smaller of the two (each against its bound): ascent along
-//    the gradient of the limiting term with a line search; interior nodes first try their
-//    neighbours' centroid. Interior nodes move freely; a boundary node's trial position is
+//    the gradient of the limiting term with a line search (for the ratio, the direction that
+//    raises the tets within 0.02 of the worst together, as Klingner & Shewchuk's smoothing
+//    does: the point of their gradients' convex hull nearest to zero); interior nodes first
+//    try their neighbours' centroid. Interior nodes move freely; a boundary node's trial position is
 //    taken back onto its old boundary where the volume is unchanged (else, with offSurface,
 //    kept across the volume gradient within maxDeviation of the old boundary). Every move
 //    keeps all tets positive in both configurations (exact) and raises the node's score.
@@ -108,6 +110,12 @@ struct ImproveResult {
 
 /// Improves the region (see the top of this file). Cost: in proportion to the region.
 ImproveResult improveMesh(TetMesh& mesh, const ImproveRegion& region, const ImproveOptions& options);
+
+/// The point of the convex hull of `g` (one to four vectors) nearest to the origin; zero for
+/// an empty or longer list. Smoothing moves a node along it: the direction that raises all the
+/// tets near the worst at once (the gradients of their radius ratios), where the worst tet's
+/// gradient alone would lower its near-tie.
+Vec3 nearestToZeroInHull(const std::vector<Vec3>& g);
 
 /// Distance from p to the triangle (a, b, c).
 double pointTriangleDistance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
