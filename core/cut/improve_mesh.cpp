@@ -111,6 +111,10 @@ constexpr int kSmoothingIterations = 40;  // ascent steps per node and sweep
 // Smoothing raises together the tets within this of the worst radius ratio (at most kMaxActive).
 constexpr double kActiveRatio = 0.02;
 constexpr std::size_t kMaxActive = 4;
+// An edge split must raise the worst tet around the edge by this much; the two longest edges
+// of a bad tet are tried.
+constexpr double kSplitGain = 0.01;
+constexpr int kSplitEdges = 2;
 
 /// The tet q with node v placed at p (reference positions otherwise).
 std::array<Vec3, 4> cornersWith(const TetMesh& m, const Tet& q, int v, const Vec3& p, bool current) {
@@ -247,11 +251,13 @@ public:
     void run() {
         r.worstBefore = worstInRegion();
         for (int sweep = 0; sweep < o.sweeps; ++sweep) {
-            const int before = r.collapses + r.smoothed + r.flips;
+            const int before = r.collapses + r.smoothed + r.flips + r.splits;
             collapseSweep();
             flipSweep();
             smoothSweep();
-            if (r.collapses + r.smoothed + r.flips == before)
+            if (o.split)
+                splitSweep();
+            if (r.collapses + r.smoothed + r.flips + r.splits == before)
                 break;
         }
         r.worstAfter = worstInRegion();
@@ -660,8 +666,35 @@ private:
             return false;
         // An edge below floorEdge goes even if the tets around it get worse, down to floorRatio.
         const bool critical = isShort && (pa - pb).norm() < o.floorEdge && best.worst >= o.floorRatio;
-        const bool accept = isShort || coarsen ? best.worst >= std::min(o.badRatio, worstBefore) || critical
-                                               : best.worst > worstBefore;
+        const auto acceptable = [&](double worst) {
+            return isShort || coarsen ? worst >= std::min(o.badRatio, worstBefore) || critical : worst > worstBefore;
+        };
+        bool accept = acceptable(best.worst);
+        if (!accept && isShort) {
+            // The merged node smoothed among the tets that remain, from the best placement.
+            const Vec3 keepRef = m.ref(a), keepPos = m.pos(a);
+            m.setNodePosition(a, best.ref, best.pos);
+            const std::optional<Vec3> x = bestPosition(a, after, best.worst);
+            m.setNodePosition(a, keepRef, keepPos);
+            if (x) {
+                Placement cand;
+                cand.ref = *x;
+                cand.worst = worstAround(after, a, *x);
+                mapToCurrent(before, *x, cand.pos, cand.vel);
+                bool ok = acceptable(cand.worst) && allPositive(after, a, *x);
+                for (const Tet& q : after)
+                    ok = ok && positiveWith(m, q, a, cand.pos, true);
+                if (ok && boundary) {
+                    const std::vector<Face> newBoundary = boundaryFacesAt(after, a);
+                    ok = !(boundaryA && distanceTo(pa, newBoundary, a, *x) > tolerance) &&
+                         !(boundaryB && distanceTo(pb, newBoundary, a, *x) > tolerance);
+                }
+                if (ok) {
+                    best = cand;
+                    accept = true;
+                }
+            }
+        }
         // The link condition last: it holds for most edges, and most placements are refused.
         if (!accept || !linkCondition(a, b))
             return false;
@@ -797,7 +830,6 @@ private:
         }
         for (std::size_t i = common; i < slots.size(); ++i)
             removeTet(slots[i]);
-        ++r.flips;
     }
 
     /// 2-3 flip of the face of tet t opposite its corner `apexIndex`, if that face is shared.
@@ -832,6 +864,7 @@ private:
         if (!better(created, worstOld))
             return false;
         replaceTets({t, t2}, created);
+        ++r.flips;
         return true;
     }
 
@@ -960,6 +993,7 @@ private:
             stack.push_back({j, k});
         }
         replaceTets(ring, created);
+        ++r.flips;
         return true;
     }
 
@@ -989,6 +1023,85 @@ private:
         }
     }
 
+    // --- edge split (vertex insertion) ---
+
+    /// Splits an edge of tet t, longest first, at a new node where smoothing puts it among the
+    /// tets the split makes, if that raises the worst tet around the edge by kSplitGain. The
+    /// new node starts at the edge's midpoint: the split tets fill exactly the space of the old
+    /// ones, on the boundary the new node lies on the old boundary, and its placement keeps
+    /// the volume as smoothing does. Halves shorter than twice shortEdge or coarsenEdge are
+    /// not made (the collapses would undo them).
+    bool trySplit(int t) {
+        const Tet q = m.tet(t);
+        std::array<int, 6> order{0, 1, 2, 3, 4, 5};
+        const auto length = [&](int e) { return (m.ref(q[kTetEdges[e][0]]) - m.ref(q[kTetEdges[e][1]])).norm(); };
+        std::sort(order.begin(), order.end(), [&](int x, int y) { return length(x) > length(y); });
+        std::vector<int> ring;
+        for (int k = 0; k < kSplitEdges; ++k) {
+            const int a = q[kTetEdges[order[k]][0]], b = q[kTetEdges[order[k]][1]];
+            if (length(order[k]) < 2 * std::max(o.shortEdge, o.coarsenEdge))
+                return false;
+            m.edgeTets(a, b, ring);
+            double worstBefore = 2;
+            std::vector<Tet> children;
+            bool inRegion = true;
+            for (int u : ring) {
+                inRegion = inRegion && flippableTet(m.tet(u));
+                worstBefore = std::min(worstBefore, tetRatio(u));
+            }
+            if (!inRegion)
+                continue;
+            const Vec3 mid = 0.5 * (m.ref(a) + m.ref(b));
+            if (keptOut(mid))
+                continue;
+            const int v = m.addNode(mid, 0.5 * (m.pos(a) + m.pos(b)));
+            m.velocities()[v] = 0.5 * (m.velocities()[a] + m.velocities()[b]);
+            std::vector<Tet> old;
+            for (int u : ring) {
+                old.push_back(m.tet(u));
+                children.push_back(replaced(m.tet(u), b, v));
+                children.push_back(replaced(m.tet(u), a, v));
+            }
+            const double worstAtMid = worstAround(children, v, mid);
+            Vec3 x = mid;
+            if (const std::optional<Vec3> better = bestPosition(v, children, worstAtMid))
+                x = *better;
+            const double worstAfter = worstAround(children, v, x);
+            Vec3 pos = m.pos(v), vel = m.velocities()[v];
+            mapToCurrent(old, x, pos, vel);
+            bool ok = worstAfter > worstBefore + kSplitGain && allPositive(children, v, x);
+            for (const Tet& c : children)
+                ok = ok && positiveWith(m, c, v, pos, true);
+            if (!ok) {
+                m.removeNode(v);  // the last node, in no tet yet
+                continue;
+            }
+            replaceTets(ring, children);
+            moveNode(v, x, pos, vel);
+            editable.insert(v);
+            flippable.insert(v);
+            nodes.push_back(v);
+            ++r.splits;
+            return true;
+        }
+        return false;
+    }
+
+    void splitSweep() {
+        std::vector<Tet> bad;
+        std::unordered_set<int> seen;
+        for (int n : nodes) {
+            if (!alive(n))
+                continue;
+            for (int t : m.nodeTets(n))
+                if (seen.insert(t).second && tetRatio(t) < o.badRatio && flippableTet(m.tet(t)))
+                    bad.push_back(m.tet(t));
+        }
+        for (const Tet& nodesOfBad : bad)
+            if (const int t = findTet(nodesOfBad); t >= 0 && tetRatio(t) < o.badRatio)
+                trySplit(t);
+    }
+
     // --- smoothing ---
     double worstAround(const std::vector<Tet>& star, int v, const Vec3& p, int* worstIndex = nullptr) const {
         double worst = 2;
@@ -1014,6 +1127,26 @@ private:
         const std::vector<Tet> star = starOf(v);
         if (star.empty())
             return false;
+        double worstNow = 2;  // the star as it is: the tets' own (remembered) ratios
+        for (int t : m.nodeTets(v))
+            worstNow = std::min(worstNow, tetRatio(t));
+        const std::optional<Vec3> x = bestPosition(v, star, worstNow);
+        if (!x)
+            return false;
+        Vec3 pos = m.pos(v), vel = m.velocities()[v];
+        mapToCurrent(star, *x, pos, vel);
+        for (const Tet& q : star)
+            if (!positiveWith(m, q, v, pos, true))
+                return false;
+        moveNode(v, *x, pos, vel);
+        ++r.smoothed;
+        return true;
+    }
+
+    /// Where smoothing would move node v with the tets `star` around it (its star, or the tets
+    /// an edge split would make; worstNow: their worst radius ratio as they are); none if
+    /// nowhere better.
+    std::optional<Vec3> bestPosition(int v, const std::vector<Tet>& star, double worstNow) const {
         const Vec3 x0 = m.ref(v);
         // The node's score: its worst tet against badRatio and its shortest edge against
         // shortEdge, the smaller of the two (1: nothing to improve).
@@ -1079,12 +1212,9 @@ private:
             }
             return std::min({ratio, edge, 1.0});
         };
-        double worstNow = 2;  // the star as it is: the tets' own (remembered) ratios
-        for (int t : m.nodeTets(v))
-            worstNow = std::min(worstNow, tetRatio(t));
         double worst = score(x0, nullptr, worstNow);
         if (worst >= 1)
-            return false;
+            return std::nullopt;
         const std::vector<Face> faces = boundaryFacesAt(star, v);
         boundary = !faces.empty();
         Vec3 gradient = Vec3::Zero();  // of the volume of the star, in the node's position
@@ -1096,7 +1226,7 @@ private:
                 gradient += g;
             }
             if (!(gradient.norm() > 0))
-                return false;
+                return std::nullopt;
             tolerance = o.maxDeviation * meanEdgeOf(faces);
         }
         if (boundary)
@@ -1168,15 +1298,8 @@ private:
                 break;
         }
         if (x == x0)
-            return false;
-        Vec3 pos = m.pos(v), vel = m.velocities()[v];
-        mapToCurrent(star, x, pos, vel);
-        for (const Tet& q : star)
-            if (!positiveWith(m, q, v, pos, true))
-                return false;
-        moveNode(v, x, pos, vel);
-        ++r.smoothed;
-        return true;
+            return std::nullopt;
+        return x;
     }
 
     void smoothSweep() {
@@ -1191,7 +1314,18 @@ private:
         for (const auto& [n, into] : mergedInto)
             dead.push_back(n);
         std::sort(dead.rbegin(), dead.rend());  // highest first: the last node never is a dead one
+        // Nodes added by splits have no index at the start, so the renumbering cannot name
+        // them: the moved and touched nodes follow the removals here instead.
+        std::vector<int> movedNow(moved.begin(), moved.end()), touchedNow;
+        for (int n : touched)
+            if (alive(n))
+                touchedNow.push_back(n);
         for (int n : dead) {
+            const int last = m.nodeCount() - 1;
+            for (std::vector<int>* list : {&movedNow, &touchedNow})
+                for (int& x : *list)
+                    if (x == last)
+                        x = n;
             nodeOrigin.remove(n, m.nodeCount());
             m.removeNode(n);
             ++r.removedNodes;
@@ -1211,12 +1345,8 @@ private:
                 }
             r.renumbering.nodes = std::move(nodeMap);
         }
-        const auto map = [&](int n) { return r.renumbering.nodes(n); };
-        for (int n : moved)
-            r.movedNodes.push_back(map(n));
-        for (int n : touched)
-            if (alive(n))
-                r.touchedNodes.push_back(map(n));
+        r.movedNodes = std::move(movedNow);
+        r.touchedNodes = std::move(touchedNow);
         std::sort(r.movedNodes.begin(), r.movedNodes.end());
         r.movedNodes.erase(std::unique(r.movedNodes.begin(), r.movedNodes.end()), r.movedNodes.end());
         std::sort(r.touchedNodes.begin(), r.touchedNodes.end());

@@ -4,7 +4,7 @@
 // Klingner & Shewchuk, "Aggressive tetrahedral mesh improvement" (2007), restricted to the
 // cut's neighbourhood and in time proportional to it.
 //
-// Two operations, repeated for a few sweeps over the region (the seed nodes and `rings` rings
+// Four operations, repeated for a few sweeps over the region (the seed nodes and `rings` rings
 // around them, anchored nodes excluded):
 //  * Edge collapse. Edges shorter than `shortEdge`, and the edges of tets whose radius ratio is
 //    below `badRatio`, are collapsed where the link condition holds (Dey et al.; the mesh
@@ -19,16 +19,25 @@
 //    configurations (exact orient3d) and the old boundary nodes stay within maxDeviation of
 //    the new boundary. A short edge is collapsed when the worst tet around it does not fall
 //    below min(badRatio, its value before); an edge of a bad tet only when the worst tet
-//    improves.
+//    improves. A short edge whose best placement is not good enough gets the merged node
+//    smoothed (below) among the tets that remain, and goes if that is.
+//  * Flips: 2-3 flips and edge removal (3-2 and rings of up to 7 tets) of bad tets, where the
+//    worst tet improves.
 //  * Smoothing. A node whose worst tet is below `badRatio` or whose shortest edge is below
 //    `shortEdge` moves to raise the smaller of the two (each against its bound): ascent along
 //    the gradient of the limiting term with a line search (for the ratio, the direction that
 //    raises the tets within 0.02 of the worst together, as Klingner & Shewchuk's smoothing
 //    does: the point of their gradients' convex hull nearest to zero); interior nodes first
-//    try their neighbours' centroid. Interior nodes move freely; a boundary node's trial position is
-//    taken back onto its old boundary where the volume is unchanged (else, with offSurface,
-//    kept across the volume gradient within maxDeviation of the old boundary). Every move
-//    keeps all tets positive in both configurations (exact) and raises the node's score.
+//    try their neighbours' centroid. Interior nodes move freely; a boundary node's trial
+//    position is taken back onto its old boundary where the volume is unchanged (else, with
+//    offSurface, kept across the volume gradient within maxDeviation of the old boundary).
+//    Every move keeps all tets positive in both configurations (exact) and raises the node's
+//    score.
+//  * Edge split (vertex insertion, `split`): a tet still bad after the others gets a new node
+//    on one of its two longest edges, placed by smoothing among the tets the split makes,
+//    where that raises the worst tet around the edge by 0.01. The split tets fill the space of
+//    the old ones (on the boundary the new node starts on the old boundary), so the volume
+//    is kept as smoothing keeps it.
 // A moved node's current position and velocity come from the tet of its old neighbourhood that
 // contains its new reference position (the deformation is carried over, not reset). Masses
 // follow Eq. 3 for every node whose tets changed. The volume of the mesh, hence its mass, is
@@ -73,6 +82,9 @@ struct ImproveOptions {
     /// collapse, across it for smoothing). Without it, the myoma's shortest edge falls to 0.22
     /// times its input's over 20 scoops (the rims where cuts meet the surface at an acute angle).
     bool offSurface = true;
+    /// Edge splits (vertex insertion): a bad tet that the other operations leave bad gets a
+    /// new node on one of its longest edges where that raises the worst tet around the edge.
+    bool split = true;
     double density = 1e-3;      ///< g/mm^3, for the masses of Eq. 3
     /// A box no node may move into (the anchored region, whose new nodes are anchored by
     /// position; reference positions).
@@ -93,6 +105,7 @@ struct ImproveResult {
     int collapses = 0;         ///< edges collapsed
     int smoothed = 0;          ///< nodes moved by smoothing
     int flips = 0;             ///< 2-3 and 3-2 flips
+    int splits = 0;            ///< edges split (nodes added)
     int removedTets = 0, removedNodes = 0;
     double worstBefore = 1, worstAfter = 1;  ///< smallest radius ratio over the region's tets
     /// Final indices of the nodes that moved (smoothing, merged nodes) and of every node whose
@@ -103,7 +116,8 @@ struct ImproveResult {
     /// collapsed node -> the new index of the node it merged into. Removal lets the last tets
     /// and nodes take the freed indices, so the lists are as long as the pass's changes.
     MeshRenumbering renumbering;
-    /// The indices (after the pass) of the tets the flips created, sorted.
+    /// The indices (after the pass) of the tets the flips and splits created, sorted. Nodes
+    /// the splits added take the indices after the surviving ones (none had an index before).
     std::vector<int> createdTets;
     bool renumbered() const { return !renumbering.empty(); }
 };

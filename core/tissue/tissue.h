@@ -178,8 +178,9 @@ private:
     /// (nodes) are renumbered, the ones resected dropped; `rebuild` is set if the simulation
     /// must be rebuilt.
     void resect(TissueCut& result, std::vector<int>& seeds, bool& rebuild);
-    /// Step 7 of cut(): improvement around `seeds`.
-    void improve(TissueCut& result, const std::vector<int>& seeds, const CutOptions& options, bool& rebuild);
+    /// Step 7 of cut(): one improvement pass around `seeds`. Returns the nodes of the tets it
+    /// left below its bound (empty if there are none or it changed nothing), for another.
+    std::vector<int> improve(TissueCut& result, const std::vector<int>& seeds, const CutOptions& options, bool& rebuild);
     /// Anchors, schemes, cut marks, the spatial index and the pieces follow a renumbering of
     /// the tets and nodes (old -> new, -1: gone).
     void renumber(const std::vector<int>& newTet, const std::vector<int>& newNode);

@@ -26,6 +26,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <random>
 #include <set>
 
@@ -161,10 +162,11 @@ QString renumberingViolations(const TetMesh& before, const TetMesh& after, const
             if (i > 0 && map->changed[i - 1].first >= map->changed[i].first)
                 problems << QString("changed indices not sorted at %1").arg(map->changed[i].first);
         }
-    if (before.nodeCount() - after.nodeCount() != r.removedNodes)
-        problems << QString("%1 nodes removed, %2 reported")
+    if (before.nodeCount() - after.nodeCount() != r.removedNodes - r.splits)
+        problems << QString("%1 nodes removed, %2 reported (%3 added by splits)")
                         .arg(before.nodeCount() - after.nodeCount())
-                        .arg(r.removedNodes);
+                        .arg(r.removedNodes)
+                        .arg(r.splits);
     std::vector<int> hits(after.nodeCount(), 0);
     for (int n = 0; n < before.nodeCount(); ++n) {
         const int to = nodes(n);
@@ -174,9 +176,17 @@ QString renumberingViolations(const TetMesh& before, const TetMesh& after, const
         }
         ++hits[to];
     }
+    // A final node no old node maps to was added by a split: it was placed, so it is reported
+    // as moved, and there are no more of them than splits.
+    int added = 0;
     for (int n = 0; n < after.nodeCount(); ++n)
-        if (hits[n] == 0)
-            problems << QString("final node %1 stands for no old node").arg(n);
+        if (hits[n] == 0) {
+            ++added;
+            if (!std::binary_search(r.movedNodes.begin(), r.movedNodes.end(), n))
+                problems << QString("final node %1 stands for no old node and was not reported moved").arg(n);
+        }
+    if (added > r.splits)
+        problems << QString("%1 new nodes after %2 splits").arg(added).arg(r.splits);
     std::vector<int> tetHits(after.tetCount(), 0);
     for (int t = 0; t < before.tetCount(); ++t) {
         const int to = tets(t);
@@ -736,6 +746,7 @@ private slots:
         ImproveOptions o;
         o.badRatio = 0.5;
         o.density = kDensity;
+        o.split = !alone;  // (alone: smoothing only)
         const ImproveResult r = improveMesh(m, region, o);
         QVERIFY2(r.smoothed >= 1, qPrintable(QString::number(r.smoothed)));
         QVERIFY2(r.worstAfter > r.worstBefore,
@@ -973,6 +984,132 @@ private slots:
             QVERIFY(now >= 0);
             QCOMPARE(m.ref(now), before[n]);
         }
+    }
+
+    void nearestToZeroInHullOfGradients() {
+        const Vec3 x = Vec3::UnitX(), y = Vec3::UnitY(), z = Vec3::UnitZ();
+        const auto near = [](const Vec3& a, const Vec3& b) { return (a - b).norm() <= 1e-14; };
+        // One vector: itself. Nothing, or more than four: zero.
+        QVERIFY(near(nearestToZeroInHull({Vec3(1, 2, 3)}), Vec3(1, 2, 3)));
+        QVERIFY(near(nearestToZeroInHull({}), Vec3::Zero()));
+        QVERIFY(near(nearestToZeroInHull({x, y, z, x, y}), Vec3::Zero()));
+        // Two tied gradients pulling apart: their mean raises both (each has dot 0.5 with it).
+        QVERIFY(near(nearestToZeroInHull({x, y}), Vec3(0.5, 0.5, 0)));
+        // A vertex nearest: the hull's other points are farther.
+        QVERIFY(near(nearestToZeroInHull({Vec3(1, 0, 0), Vec3(2, 1, 0), Vec3(2, -1, 0)}), x));
+        // An edge nearest (its foot inside the edge), the third vector far off.
+        QVERIFY(near(nearestToZeroInHull({Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(5, 0, 3)}), x));
+        // The face of three: (1, 1, 1) / 3 is where x + y + z = 1 comes nearest.
+        QVERIFY(near(nearestToZeroInHull({x, y, z}), Vec3::Constant(1.0 / 3)));
+        // Zero inside the hull: no direction raises them all.
+        QVERIFY(near(nearestToZeroInHull({x, -x}), Vec3::Zero()));
+        QVERIFY(near(nearestToZeroInHull({x, y, -x - y + z, -z}), Vec3::Zero()));
+        // Degenerate (parallel) vectors do not fool it; scale does not matter.
+        QVERIFY(near(nearestToZeroInHull({2 * x, 4 * x, 3 * x}), 2 * x));
+        for (double scale : {1e-6, 1.0, 1e6}) {
+            const Vec3 g = nearestToZeroInHull({scale * x, scale * y, scale * Vec3(1, 1, -1)});
+            QVERIFY2((g - scale * Vec3(0.5, 0.5, 0)).norm() <= 1e-12 * scale, qPrintable(QString::number(g.norm())));
+        }
+        // The result is in the hull and has no larger dot product with any point of the hull
+        // than with itself (what makes it raise every gradient at once), on random sets.
+        std::mt19937 rng(3);
+        std::normal_distribution<double> n01;
+        for (int trial = 0; trial < 500; ++trial) {
+            std::vector<Vec3> g(1 + trial % 4);
+            for (Vec3& v : g)
+                v = Vec3(n01(rng), n01(rng), n01(rng)) + Vec3(0.5, 0, 0);
+            const Vec3 d = nearestToZeroInHull(g);
+            for (const Vec3& v : g)
+                QVERIFY2(v.dot(d) >= d.squaredNorm() - 1e-12, qPrintable(QString("trial %1").arg(trial)));
+        }
+    }
+
+    void splitMendsANeedle_data() { shortInteriorEdgeIsCollapsed_data(); }
+    void splitMendsANeedle() {
+        // A needle: one tet, its edge a-b four times longer than the others. Nothing but a
+        // split mends it (with offSurface off, no node may leave the tet's faces): the new
+        // node on a-b, placed by smoothing among the two halves, makes two better tets, the
+        // volume and masses unchanged and the new node on the old surface.
+        QFETCH(double, scale);
+        const std::vector<Vec3> nodes{Vec3(0, 0, 0) * scale, Vec3(4, 0, 0) * scale, Vec3(2, 1, 0) * scale,
+                                      Vec3(2, 0.5, 0.9) * scale};
+        TetMesh m = TetMesh::fromArrays(nodes, {Tet{0, 1, 2, 3}});
+        QVERIFY(orient3d(m.ref(0), m.ref(1), m.ref(2), m.ref(3)) > 0);
+        computeLumpedMasses(m, kDensity);
+        const double worstBefore = worstRatioAround(m, 0);
+        const double volume = m.totalReferenceVolume(), mass = sumOfMasses(m);
+        const TetMesh before = m;
+        ImproveOptions o;
+        o.badRatio = 0.9;
+        o.offSurface = false;
+        o.density = kDensity;
+        o.split = false;
+        TetMesh without = m;
+        const ImproveResult r0 = improveMesh(without, improveRegion(without, {0, 1, 2, 3}, {}, 1), o);
+        QCOMPARE(r0.splits, 0);
+        QCOMPARE(without.tetCount(), 1);
+        o.split = true;
+        const ImproveResult r = improveMesh(m, improveRegion(m, {0, 1, 2, 3}, {}, 1), o);
+        QVERIFY2(r.splits >= 1, qPrintable(QString::number(r.splits)));
+        QCOMPARE(m.nodeCount(), 4 + r.splits - r.removedNodes);
+        QVERIFY2(r.worstAfter > r0.worstAfter + 0.05 && r.worstAfter > worstBefore + 0.05,
+                 qPrintable(QString("%1 (split) / %2 (none) / %3 before").arg(r.worstAfter).arg(r0.worstAfter).arg(worstBefore)));
+        double worst = 1;
+        for (const Tet& q : m.tets())
+            worst = std::min(worst, radiusRatio(m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3])));
+        QCOMPARE(worst, r.worstAfter);
+        QVERIFY2(renumberingViolations(before, m, r).isEmpty(), qPrintable(renumberingViolations(before, m, r)));
+        QVERIFY(relative(m.totalReferenceVolume(), volume) <= 1e-12);
+        QVERIFY(relative(sumOfMasses(m), mass) <= 1e-12);
+        TetMesh scratch = m;
+        computeLumpedMasses(scratch, kDensity);
+        for (int n = 0; n < m.nodeCount(); ++n)
+            QVERIFY(relative(m.masses()[n], scratch.masses()[n]) <= 1e-12);
+        if (const auto problems = checkValidity(m); !problems.empty())
+            QFAIL(problems.front().message.c_str());
+        // Every node, old or new, lies on the needle's surface.
+        for (int n = 0; n < m.nodeCount(); ++n) {
+            double distance = std::numeric_limits<double>::infinity();
+            for (const auto& f : kTetFaces)
+                distance = std::min(distance, pointTriangleDistance(m.ref(n), nodes[f[0]], nodes[f[1]], nodes[f[2]]));
+            QVERIFY2(distance <= 1e-12 * scale, qPrintable(QString("node %1: %2").arg(n).arg(distance)));
+        }
+    }
+
+    void splitsKeepTheInvariants_data() {
+        QTest::addColumn<unsigned>("seed");
+        for (unsigned seed : {1u, 2u, 3u, 4u})
+            QTest::newRow(qPrintable(QString("seed %1").arg(seed))) << seed;
+    }
+    void splitsKeepTheInvariants() {
+        // A cube jittered into slivers, improved with splits: valid, the volume and Eq. 3 kept,
+        // the renumbering exact; and splits happen.
+        QFETCH(unsigned, seed);
+        TetMesh m = jitteredCube(3.0, 4, seed, 0.3);
+        QVERIFY(checkValidity(m).empty());
+        computeLumpedMasses(m, kDensity);
+        const TetMesh before = m;
+        const double volume = m.totalReferenceVolume(), mass = sumOfMasses(m);
+        std::vector<int> all(m.nodeCount());
+        std::iota(all.begin(), all.end(), 0);
+        ImproveOptions o;
+        o.badRatio = 0.6;
+        o.density = kDensity;
+        o.sweeps = 5;
+        const ImproveResult r = improveMesh(m, improveRegion(m, all, {}, 1), o);
+        QVERIFY2(r.splits > 0, "no split");
+        QVERIFY2(renumberingViolations(before, m, r).isEmpty(), qPrintable(renumberingViolations(before, m, r)));
+        QVERIFY(relative(m.totalReferenceVolume(), volume) <= 1e-12);
+        QVERIFY(relative(sumOfMasses(m), mass) <= 1e-12);
+        TetMesh scratch = m;
+        computeLumpedMasses(scratch, kDensity);
+        for (int n = 0; n < m.nodeCount(); ++n)
+            QVERIFY(relative(m.masses()[n], scratch.masses()[n]) <= 1e-12);
+        if (const auto problems = checkValidity(m); !problems.empty())
+            QFAIL(problems.front().message.c_str());
+        for (const Tet& q : m.tets())
+            QVERIFY(orient3d(m.pos(q[0]), m.pos(q[1]), m.pos(q[2]), m.pos(q[3])) > 0);
+        QVERIFY(r.worstAfter > r.worstBefore);
     }
 };
 

@@ -319,10 +319,10 @@ private slots:
     void tenScoopsThroughTheTissue() {
         // The ten intersecting scoops as the product makes them (Tissue::cut at the defaults:
         // the mesh improvement after every cut, chips off the anchored base removed): the
-        // remaining tissue keeps its worst element within 0.3 times the input's (the bare
-        // cutter above leaves 3e-5; the issue asks 0.5; measured 0.36 at worst over the ten cuts: the lattice box's input
-        // is far better than an organ mesh's, 0.72), its stable step within a factor 7 of
-        // the input's, and simulates stably at that step.
+        // remaining tissue keeps its worst element within 0.5 times the input's after every
+        // cut (the bare cutter above leaves 3e-5; measured 0.55 at worst), its stable step
+        // within a factor 7 of the input's, and simulates stably at that step. (The same ten
+        // scoops moved by up to 0.5 mm reach 0.5 in 17 placements of 26: issue 16's note.)
         HardCase c = makeCase("ten intersecting scoops");
         const Material material;
         computeLumpedMasses(c.mesh, material.density);
@@ -341,7 +341,7 @@ private slots:
             QVERIFY2(st.ok(), st.message().c_str());
             const double ratio = summarizeQuality(tissue.mesh()).minRadiusRatio;
             worst = std::min(worst, ratio);
-            QVERIFY2(ratio >= 0.3 * ratio0, qPrintable(QString("after cut %1: %2 (input %3)").arg(tissue.cutCount()).arg(ratio).arg(ratio0)));
+            QVERIFY2(ratio >= 0.5 * ratio0, qPrintable(QString("after cut %1: %2 (input %3)").arg(tissue.cutCount()).arg(ratio).arg(ratio0)));
         }
         QVERIFY(tissue.chips().size() >= 1);
         QVERIFY(std::abs(tissue.mesh().totalReferenceVolume() + tissue.resectedVolume() - volume0) <= 1e-9 * volume0);

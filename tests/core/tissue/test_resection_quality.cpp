@@ -109,13 +109,13 @@ private slots:
                 QTest::newRow(qPrintable(QString("%1, seed %2").arg(mesh).arg(seed)))
                     << QString(mesh) << 1.0 << seed << 0.5 << 0.3;
         }
-        // A lattice box, whose input is far better than any organ mesh (worst ratio 0.72): the
-        // pass improves tets below 0.55 only (Tissue: improving all touched tets costs 10 times
-        // the time), so it holds 0.35 x (measured 0.4-0.5 x) and the edges above 0.3 x.
+        // A lattice box, whose input is far better than any organ mesh (worst ratio 0.72; the
+        // pass improves tets below 0.55 only): the same bounds since the improvement runs again
+        // around the tets a pass leaves bad and splits edges (issue 16; 0.35 x before).
         for (double scale : {1e-3, 1.0, 1e3})
-            QTest::newRow(qPrintable(QString("box, scale %1").arg(scale))) << QString("box") << scale << 7u << 0.35 << 0.3;
+            QTest::newRow(qPrintable(QString("box, scale %1").arg(scale))) << QString("box") << scale << 7u << 0.5 << 0.3;
         for (unsigned seed : {11u, 12u})
-            QTest::newRow(qPrintable(QString("box, seed %1").arg(seed))) << QString("box") << 1.0 << seed << 0.35 << 0.3;
+            QTest::newRow(qPrintable(QString("box, seed %1").arg(seed))) << QString("box") << 1.0 << seed << 0.5 << 0.3;
     }
     void twentyScoops() {
         QFETCH(QString, mesh);
