@@ -131,15 +131,14 @@ private slots:
         QTest::addColumn<unsigned>("seed");
         QTest::addColumn<double>("ratioBound");
         QTest::addColumn<double>("edgeBound");
-        // Mouse-like strokes cut partway into the body (their crack fronts are subdivided):
-        // not yet at the scoops' bounds (issue 16's open part). Measured over 20 passes (every
-        // fifth a stroke): worst ratio 0.3-1.0 x input on the samples; shortest edge at least
-        // 0.28 x on the inscribed meshes of before issue 18, 0.13 x (myoma, seed 8) on the
-        // volume-matched ones, held above these floors. (On the lattice box they fall to
-        // 0.13 x and 0.08 x, and a boundary node drifts 0.41 mean edges: not covered yet.)
+        // Mouse-like strokes cut partway into the body (their crack fronts are subdivided), every
+        // fifth pass of 20: the issue's bounds since the improvement splits edges and runs
+        // again around what it left bad (0.25 x and 0.12 x before). Not everywhere yet: over
+        // seeds 7-12, the polyp holds them all, the myoma all but seed 9 (shortest edge
+        // 0.28 x), the lattice box 2 of 6 (worst ratio down to 0.23 x); issue 16's note.
         for (const char* mesh : {"polyp", "myoma"})
             for (unsigned seed : {7u, 8u})
-                QTest::newRow(qPrintable(QString("%1, seed %2").arg(mesh).arg(seed))) << QString(mesh) << seed << 0.25 << 0.12;
+                QTest::newRow(qPrintable(QString("%1, seed %2").arg(mesh).arg(seed))) << QString(mesh) << seed << 0.5 << 0.3;
     }
     void mouseStrokesAmongScoops() {
         QFETCH(QString, mesh);
