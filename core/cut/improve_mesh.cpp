@@ -997,12 +997,11 @@ private:
         return true;
     }
 
-    void flipSweep() {
-        // The bad tets of the region, by their nodes (indices change as tets are replaced).
+    /// The bad tets around `around` whose nodes are all in the region, by their nodes (indices
+    /// change as tets are replaced).
+    std::vector<Tet> badTetsAround(const std::vector<int>& around) const {
         std::vector<Tet> bad;
         std::unordered_set<int> seen;
-        std::vector<int> around = nodes;
-        around.insert(around.end(), fixedInRegion.begin(), fixedInRegion.end());
         for (int n : around) {
             if (!alive(n))
                 continue;
@@ -1010,7 +1009,13 @@ private:
                 if (seen.insert(t).second && tetRatio(t) < o.badRatio && flippableTet(m.tet(t)))
                     bad.push_back(m.tet(t));
         }
-        for (const Tet& nodesOfBad : bad) {
+        return bad;
+    }
+
+    void flipSweep() {
+        std::vector<int> around = nodes;
+        around.insert(around.end(), fixedInRegion.begin(), fixedInRegion.end());
+        for (const Tet& nodesOfBad : badTetsAround(around)) {
             const int t = findTet(nodesOfBad);
             if (t < 0)
                 continue;
@@ -1088,16 +1093,7 @@ private:
     }
 
     void splitSweep() {
-        std::vector<Tet> bad;
-        std::unordered_set<int> seen;
-        for (int n : nodes) {
-            if (!alive(n))
-                continue;
-            for (int t : m.nodeTets(n))
-                if (seen.insert(t).second && tetRatio(t) < o.badRatio && flippableTet(m.tet(t)))
-                    bad.push_back(m.tet(t));
-        }
-        for (const Tet& nodesOfBad : bad)
+        for (const Tet& nodesOfBad : badTetsAround(nodes))
             if (const int t = findTet(nodesOfBad); t >= 0 && tetRatio(t) < o.badRatio)
                 trySplit(t);
     }
