@@ -970,39 +970,63 @@ private slots:
         QTest::addColumn<int>("which");
         QTest::newRow("polyp after 10 scoops") << 0;
         QTest::newRow("myoma after 12 scoops") << 1;
+        QTest::newRow("box, ten scoops, cut 8") << 2;
+        QTest::newRow("box, ten scoops moved 0.03, cut 4") << 3;
+        QTest::newRow("box, ten scoops moved 0.2, cut 9") << 4;
     }
     void worstTetsOfABareResection() {
-        // The worst tets the paper's pipeline alone left after a run of scoops (literal
-        // neighbourhoods, improve_regressions.h): the pass lifts them to at least half the
-        // input's worst ratio, with the volume kept and the fixed context untouched.
+        // The worst tets the paper's pipeline alone, or with the improvement of before issue
+        // 16's splits, left after a run of scoops (literal neighbourhoods,
+        // improve_regressions.h): the pass, at the product's settings (Tissue::improve), lifts
+        // them to at least half the input's worst ratio, with the volume kept and the fixed
+        // context untouched.
         QFETCH(int, which);
-        const testing::ImproveCase c = which == 0 ? testing::polypAfter10() : testing::myomaAfter12();
+        const testing::ImproveCase c = which == 0   ? testing::polypAfter10()
+                                       : which == 1 ? testing::myomaAfter12()
+                                       : which == 2 ? testing::boxTenScoopsCut8()
+                                       : which == 3 ? testing::boxTenScoopsShiftedCut4()
+                                                    : testing::boxTenScoopsShiftedCut9();
         TetMesh m = TetMesh::fromArrays(c.nodes, c.tets);
         computeLumpedMasses(m, 1e-3);
         const auto ratioOf = [&](const Tet& q) { return radiusRatio(m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3])); };
-        QVERIFY(ratioOf(c.worstTet) < 0.2 * c.inputWorstRatio);
+        QVERIFY(ratioOf(c.worstTet) < 0.5 * c.inputWorstRatio);
         const double volume = m.totalReferenceVolume();
         const std::vector<Vec3> before(m.referencePositions().begin(), m.referencePositions().end());
         ImproveOptions o;
-        o.badRatio = c.inputWorstRatio;
+        o.badRatio = std::min(c.inputWorstRatio, 0.55);
         o.shortEdge = 0.6 * c.inputShortestEdge;
         o.floorEdge = 0.45 * c.inputShortestEdge;
         o.floorRatio = 0.55 * c.inputWorstRatio;
-        o.sweeps = 5;
-        const ImproveRegion region = improveRegion(m, std::vector<int>(c.worstTet.begin(), c.worstTet.end()), c.fixedNodes, 2);
-        const ImproveResult r = improveMesh(m, region, o);
-        QVERIFY(r.collapses + r.flips + r.smoothed > 0);
+        o.sweeps = 8;
+        // As Tissue::cut runs it: up to four passes, each around the tets the last left bad.
+        std::vector<int> seeds(c.worstTet.begin(), c.worstTet.end()), fixed = c.fixedNodes;
+        int changes = 0;
+        for (int pass = 0; pass < 4 && !seeds.empty(); ++pass) {
+            const ImproveResult r = improveMesh(m, improveRegion(m, seeds, fixed, 2), o);
+            changes += r.collapses + r.flips + r.smoothed + r.splits;
+            for (int& n : fixed)
+                n = r.renumbering.nodes(n);
+            seeds.clear();
+            for (const Tet& q : m.tets())
+                if (ratioOf(q) < o.badRatio)
+                    seeds.insert(seeds.end(), q.begin(), q.end());
+        }
+        QVERIFY(changes > 0);
         double worst = 1;
         for (const Tet& q : m.tets())
             worst = std::min(worst, ratioOf(q));
+        // Open (issue 16): the spike at the box corner (6, 0, 6), with nodes the older
+        // improvement had moved outside the box, stays at 0.27 (0.38 times) within this fixed
+        // context. (An unexpected pass fails too: then the mark goes.)
+        if (which == 2)
+            QEXPECT_FAIL("", "the box corner spike of cut 8 is not lifted to 0.5 times yet", Continue);
         QVERIFY2(worst >= 0.5 * c.inputWorstRatio, qPrintable(QString("worst %1, input %2").arg(worst).arg(c.inputWorstRatio)));
         QVERIFY(std::abs(m.totalReferenceVolume() - volume) <= 1e-12 * volume);
         if (const auto problems = checkValidity(m); !problems.empty())
             QFAIL(problems.front().message.c_str());
-        for (int n : c.fixedNodes) {
-            const int now = r.renumbering.nodes(n);
-            QVERIFY(now >= 0);
-            QCOMPARE(m.ref(now), before[n]);
+        for (std::size_t i = 0; i < fixed.size(); ++i) {
+            QVERIFY(fixed[i] >= 0);
+            QCOMPARE(m.ref(fixed[i]), before[c.fixedNodes[i]]);
         }
     }
 
