@@ -316,13 +316,56 @@ private slots:
         QVERIFY(hybridDt > 0 && subdivisionDt > 0);
     }
 
+    void tenScoopsMovedAbout() {
+        // The ten scoops of tenScoopsThroughTheTissue, moved about: scoop k through
+        // (3.013 + s sin(7k + 1), 2.987 + s cos(5k + 2)) for s = 0, 0.02, ..., 0.5 mm. The worst
+        // tet after any cut, over the input's: at least 0.5 in most placements and never
+        // catastrophic. Measured: 16 of 26 at 0.5 or more, 0.51 on average, 0.26 at the
+        // least (the improvement of before issue 16's splits and repeated passes: 2 of 26,
+        // 0.34, 0.02). Issue 16 asks 0.5 everywhere: not reached yet.
+        const TetMesh input = box();
+        const double ratio0 = summarizeQuality(input).minRadiusRatio;
+        const Material material;
+        int good = 0;
+        double sum = 0, least = 1;
+        const int placements = 26;
+        for (int i = 0; i < placements; ++i) {
+            const double shift = 0.02 * i;
+            TetMesh mesh = input;
+            computeLumpedMasses(mesh, material.density);
+            FixedSelection anchors;
+            anchors.box = bottom();
+            Tissue tissue;
+            QVERIFY(Tissue::create(mesh, {}, material, anchors, tissue).ok());
+            tissue.setResectedPieces(ResectedPieces::Remove);
+            double worst = 1;
+            for (int k = 0; k < 10; ++k) {
+                const SweepSurface sweep = scoop(3.013 + shift * std::sin(7.0 * k + 1), 2.987 + shift * std::cos(5.0 * k + 2),
+                                                 0.1 + k * std::numbers::pi / 10, 1.4 + 0.03 * k, kSide + 0.5, 4);
+                const Status st = tissue.cut(sweep, CutOptions{.snap = true, .relaxSteps = 10});
+                QVERIFY2(st.ok(), st.message().c_str());
+                worst = std::min(worst, summarizeQuality(tissue.mesh()).minRadiusRatio / ratio0);
+            }
+            if (const auto problems = checkValidity(tissue.mesh()); !problems.empty())
+                QFAIL(problems.front().message.c_str());
+            good += worst >= 0.5 ? 1 : 0;
+            sum += worst;
+            least = std::min(least, worst);
+        }
+        qInfo("ten scoops in %d placements: %d at 0.5 x the input's worst ratio or more, %.3f on average, %.3f at the least",
+              placements, good, sum / placements, least);
+        QVERIFY2(good >= 15, qPrintable(QString::number(good)));
+        QVERIFY2(sum / placements >= 0.48, qPrintable(QString::number(sum / placements)));
+        QVERIFY2(least >= 0.25, qPrintable(QString::number(least)));
+    }
+
     void tenScoopsThroughTheTissue() {
         // The ten intersecting scoops as the product makes them (Tissue::cut at the defaults:
         // the mesh improvement after every cut, chips off the anchored base removed): the
         // remaining tissue keeps its worst element within 0.5 times the input's after every
         // cut (the bare cutter above leaves 3e-5; measured 0.55 at worst), its stable step
         // within a factor 7 of the input's, and simulates stably at that step. (The same ten
-        // scoops moved by up to 0.5 mm reach 0.5 in 17 placements of 26: issue 16's note.)
+        // scoops moved by up to 0.5 mm reach 0.5 in 16 placements of 26: tenScoopsMovedAbout.)
         HardCase c = makeCase("ten intersecting scoops");
         const Material material;
         computeLumpedMasses(c.mesh, material.density);
