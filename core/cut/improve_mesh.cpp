@@ -1,8 +1,10 @@
 #include "core/cut/improve_mesh.h"
 
 #include "core/cut/update_rest_state.h"
+#include "core/mesh/body_surface.h"
 #include "core/mesh/predicates.h"
 #include "core/mesh/quality.h"
+#include "core/mesh/topology.h"
 
 #include <Eigen/Cholesky>
 
@@ -115,6 +117,16 @@ constexpr std::size_t kMaxActive = 4;
 // of a bad tet are tried.
 constexpr double kSplitGain = 0.01;
 constexpr int kSplitEdges = 2;
+// How far (in local edge lengths) a boundary node may be placed outside the body, or off it for
+// a node of the body's surface alone, when ImproveOptions::body is given: rounding. The bound is
+// absolute (against the body as created), so it does not add up over passes.
+constexpr double kBodyTolerance = 1e-9;
+// A node within this many local edge lengths of the body's surface is on it (held to it if no
+// cut marks it): placements on the old boundary that keep the volume exactly can land off a
+// plane by about kBodyTolerance near the body's sharp edges, and such a node stays held.
+constexpr double kOnBodyTolerance = 1e-6;
+// A boundary face within this many local edge lengths of the body's surface lies on it.
+constexpr double kBodyFace = 0.05;
 
 /// The tet q with node v placed at p (reference positions otherwise).
 std::array<Vec3, 4> cornersWith(const TetMesh& m, const Tet& q, int v, const Vec3& p, bool current) {
@@ -242,7 +254,7 @@ class Pass {
 public:
     Pass(TetMesh& mesh, const ImproveRegion& region, const ImproveOptions& options, ImproveResult& result)
         : m(mesh), o(options), r(result), editable(region.nodes.begin(), region.nodes.end()),
-          nodes(region.nodes), tetOrigin(mesh.tetCount()), nodeOrigin(mesh.nodeCount()) {
+          nodes(region.nodes), tetOrigin(mesh.tetCount()), nodeOrigin(mesh.nodeCount()), startNodes(mesh.nodeCount()) {
         flippable = editable;
         flippable.insert(region.fixed.begin(), region.fixed.end());
         fixedInRegion = region.fixed;
@@ -276,6 +288,8 @@ private:
     std::unordered_set<int> moved, touched;
     SlotOrigins tetOrigin, nodeOrigin;           ///< what each changed slot held at the start
     mutable std::unordered_map<int, double> ratioOf;  ///< tetRatio() of tets not changed since
+    int startNodes;                              ///< node count at the start (added nodes come after)
+    std::unordered_map<int, bool> cutMarkOf;     ///< onCut() of merged and added nodes
 
     bool alive(int n) const { return !mergedInto.count(n); }
 
@@ -284,6 +298,54 @@ private:
             return false;
         const auto& [lo, hi] = *o.keepOut;
         return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
+    }
+
+    // --- the body's surface (ImproveOptions::body, cutSurfaceNodes) ---
+    /// Whether node n lies on a cut's surface (ImproveOptions::cutSurfaceNodes; a merged node
+    /// if either end did, a split point if both ends of its edge did).
+    bool onCut(int n) const {
+        if (const auto it = cutMarkOf.find(n); it != cutMarkOf.end())
+            return it->second;
+        return n < static_cast<int>(o.cutSurfaceNodes.size()) && o.cutSurfaceNodes[n] != 0;
+    }
+    /// Whether a boundary node with boundary faces `faces` (a merged node: of both ends; its
+    /// boundary ones in `nodesOf`) is a node of the body's surface alone: on the body's surface
+    /// and on no cut's by its marks (a node the marks miss, off the body, is not), or without
+    /// marks, every face lies on the body's surface (corners and centroid within kBodyFace
+    /// local edge lengths `scale` of it, which allows for chords of a curved body).
+    bool bodyOnly(const std::vector<int>& nodesOf, const std::vector<Face>& faces, double scale) const {
+        if (!o.body || faces.empty())
+            return false;
+        if (!o.cutSurfaceNodes.empty()) {
+            // (A node the marks miss, off the body, does not free a merged node from the body.)
+            const double eps = kOnBodyTolerance * scale;
+            if (std::any_of(nodesOf.begin(), nodesOf.end(), [&](int n) { return onCut(n); }))
+                return false;
+            return std::any_of(nodesOf.begin(), nodesOf.end(), [&](int n) {
+                const BodySurface::Side s = o.body->side(m.ref(n), 2 * eps);
+                return std::abs(s.distance) <= s.slack + eps;
+            });
+        }
+        const double tolerance = kBodyFace * scale;
+        for (const Face& f : faces) {
+            const Vec3 a = m.ref(f.nodes[0]), b = m.ref(f.nodes[1]), c = m.ref(f.nodes[2]);
+            for (const Vec3& p : {a, b, c, Vec3((a + b + c) / 3)})
+                if (!(o.body->distance(p, 2 * tolerance) <= tolerance))
+                    return false;
+        }
+        return true;
+    }
+    /// Whether a boundary node moved from `from` to p leaves the body: p is outside it, or the
+    /// node is of the body's surface alone (`pure`) and p is off that surface. Both up to the
+    /// surface's slack (BodySurface::side) and rounding; `scale`: a local edge length. The
+    /// surface is searched within |p - from| plus that length of p (from may itself lie
+    /// outside by up to the slack of another patch).
+    bool leavesBody(const Vec3& from, const Vec3& p, bool pure, double scale) const {
+        if (!o.body)
+            return false;
+        const double eps = kBodyTolerance * scale;
+        const BodySurface::Side s = o.body->side(p, (p - from).norm() + scale);
+        return s.distance > s.slack + eps || (pure && s.distance < -s.slack - eps);
     }
 
     double worstInRegion() const {
@@ -571,7 +633,14 @@ private:
         const bool boundaryB = !facesB.empty();
         oldBoundary.insert(oldBoundary.end(), facesB.begin(), facesB.end());
         const bool boundary = boundaryA || boundaryB;
-        const double tolerance = o.maxDeviation * meanEdgeOf(oldBoundary);
+        const double edgeScale = meanEdgeOf(oldBoundary);
+        const double tolerance = o.maxDeviation * edgeScale;
+        std::vector<int> boundaryEnds;
+        if (boundaryA)
+            boundaryEnds.push_back(a);
+        if (boundaryB)
+            boundaryEnds.push_back(b);
+        const bool pure = bodyOnly(boundaryEnds, oldBoundary, edgeScale);
 
         Placement best;
         const Vec3 pa = m.ref(a), pb = m.ref(b);
@@ -610,8 +679,8 @@ private:
                 const std::optional<Vec3> q = onBoundaryWithVolume(oldBoundary, gradient, p0, volumeBefore - volume);
                 if (q) {
                     p = *q;
-                } else if (!o.offSurface || (coarsen && !isShort)) {
-                    continue;  // (coarsening, being optional, keeps to the old boundary)
+                } else if (!o.offSurface || (coarsen && !isShort) || pure) {
+                    continue;  // (coarsening, being optional, and the body's surface keep to the old boundary)
                 } else {
                     // No point of the old boundary has the volume: along the gradient, within
                     // maxDeviation of the old boundary (checked below).
@@ -619,7 +688,7 @@ private:
                     offSurface = true;
                 }
             }
-            if (!p.allFinite() || keptOut(p))
+            if (!p.allFinite() || keptOut(p) || (boundary && leavesBody(p0, p, pure, edgeScale)))
                 continue;
             if (o.maxEdge > 0 && !isShort) {
                 // Coarsening stops where edges would grow too long.
@@ -727,6 +796,7 @@ private:
         for (int t : shell)
             removeTet(t);
         mergedInto[b] = a;
+        cutMarkOf[a] = onCut(a) || onCut(b);
         moved.erase(b);
         touched.erase(b);
         moveNode(a, at.ref, at.pos, at.vel);
@@ -1059,7 +1129,13 @@ private:
             const Vec3 mid = 0.5 * (m.ref(a) + m.ref(b));
             if (keptOut(mid))
                 continue;
+            // A split point of the body's surface alone starts on it (the midpoint of a chord
+            // from a rim node that went into the body does not).
+            if (o.body && !(onCut(a) && onCut(b)) && isBoundaryEdge(m, a, b) &&
+                leavesBody(mid, mid, true, length(order[k])))
+                continue;
             const int v = m.addNode(mid, 0.5 * (m.pos(a) + m.pos(b)));
+            cutMarkOf[v] = onCut(a) && onCut(b);
             m.velocities()[v] = 0.5 * (m.velocities()[a] + m.velocities()[b]);
             std::vector<Tet> old;
             for (int u : ring) {
@@ -1079,6 +1155,7 @@ private:
                 ok = ok && positiveWith(m, c, v, pos, true);
             if (!ok) {
                 m.removeNode(v);  // the last node, in no tet yet
+                cutMarkOf.erase(v);
                 continue;
             }
             replaceTets(ring, children);
@@ -1214,7 +1291,8 @@ private:
         const std::vector<Face> faces = boundaryFacesAt(star, v);
         boundary = !faces.empty();
         Vec3 gradient = Vec3::Zero();  // of the volume of the star, in the node's position
-        double tolerance = 0;
+        double tolerance = 0, edgeScale = 0;
+        bool pure = false;
         if (boundary) {
             for (const Tet& q : star) {
                 Vec3 g;
@@ -1223,7 +1301,9 @@ private:
             }
             if (!(gradient.norm() > 0))
                 return std::nullopt;
-            tolerance = o.maxDeviation * meanEdgeOf(faces);
+            edgeScale = meanEdgeOf(faces);
+            tolerance = o.maxDeviation * edgeScale;
+            pure = bodyOnly({v}, faces, edgeScale);
         }
         if (boundary)
             normal = gradient.normalized();
@@ -1240,10 +1320,11 @@ private:
                 // (p is across the volume gradient from x0: it keeps the volume too, a little
                 // off the boundary where it is curved.)
                 at = onBoundaryWithVolume(faces, gradient, p, gradient.dot(x0 - p));
-                if (!at && o.offSurface && distanceTo(p, faces, v, x0) <= tolerance)
+                if (!at && o.offSurface && !pure && distanceTo(p, faces, v, x0) <= tolerance)
                     at = p;
             }
-            if (!at || keptOut(*at) || !allPositive(star, v, *at))
+            if (!at || keptOut(*at) || (boundary && leavesBody(x0, *at, pure, edgeScale)) ||
+                !allPositive(star, v, *at))
                 return std::nullopt;
             if (boundary && distanceTo(x0, faces, v, *at) > tolerance)
                 return std::nullopt;
@@ -1312,13 +1393,18 @@ private:
         std::sort(dead.rbegin(), dead.rend());  // highest first: the last node never is a dead one
         // Nodes added by splits have no index at the start, so the renumbering cannot name
         // them: the moved and touched nodes follow the removals here instead.
-        std::vector<int> movedNow(moved.begin(), moved.end()), touchedNow;
+        // Nodes the pass put on a cut's surface: split points of cut edges, and merged nodes
+        // that took the mark of a node without an index at the start (a split point).
+        std::vector<int> movedNow(moved.begin(), moved.end()), touchedNow, addedOnCut;
+        for (const auto& [n, mark] : cutMarkOf)
+            if (mark && alive(n) && n < m.nodeCount())
+                addedOnCut.push_back(n);
         for (int n : touched)
             if (alive(n))
                 touchedNow.push_back(n);
         for (int n : dead) {
             const int last = m.nodeCount() - 1;
-            for (std::vector<int>* list : {&movedNow, &touchedNow})
+            for (std::vector<int>* list : {&movedNow, &touchedNow, &addedOnCut})
                 for (int& x : *list)
                     if (x == last)
                         x = n;
@@ -1341,6 +1427,8 @@ private:
                 }
             r.renumbering.nodes = std::move(nodeMap);
         }
+        r.addedOnCutSurface = std::move(addedOnCut);
+        std::sort(r.addedOnCutSurface.begin(), r.addedOnCutSurface.end());
         r.movedNodes = std::move(movedNow);
         r.touchedNodes = std::move(touchedNow);
         std::sort(r.movedNodes.begin(), r.movedNodes.end());

@@ -38,6 +38,13 @@
 //    where that raises the worst tet around the edge by 0.01. The split tets fill the space of
 //    the old ones (on the boundary the new node starts on the old boundary), so the volume
 //    is kept as smoothing keeps it.
+// The body's surface (`body`, with the cut marks `cutSurfaceNodes`; issue 16: no node may leave
+// it): no boundary node is placed outside the body as it was before any cut, and a boundary
+// node on no cut's surface that lies on the body's surface (a node of the body's surface alone)
+// is placed only on its old boundary and on the body's surface, so it never leaves it. Nodes of
+// a cut's surface keep the freedom above (a rim node, on both, may go into the body along the
+// cut, never out of it). Both up to rounding and to the chordal slack of smooth curved patches
+// (BodySurface::side): exact on flat patches and at sharp edges.
 // A moved node's current position and velocity come from the tet of its old neighbourhood that
 // contains its new reference position (the deformation is carried over, not reset). Masses
 // follow Eq. 3 for every node whose tets changed. The volume of the mesh, hence its mass, is
@@ -48,10 +55,14 @@
 #include "core/mesh/tet_mesh.h"
 
 #include <array>
+#include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace resect {
+
+class BodySurface;
 
 /// Accepted ranges of ImproveOptions (messages print them).
 struct ImproveLimits {
@@ -85,6 +96,17 @@ struct ImproveOptions {
     /// Edge splits (vertex insertion): a bad tet that the other operations leave bad gets a
     /// new node on one of its longest edges where that raises the worst tet around the edge.
     bool split = true;
+    /// The body's surface before any cut (Tissue keeps it), or null. With it no node may leave
+    /// the body's surface: no boundary node is placed outside the body, and a node whose
+    /// boundary faces all lie on the body's surface (not on a cut's) is placed off its old
+    /// boundary only where that is on the body's surface too (on a flat patch, within it).
+    const BodySurface* body = nullptr;
+    /// Per node (indices at the start of the pass), nonzero where the node lies on a cut's
+    /// surface (Tissue::onCutSurface). With `body`, a boundary node on no cut's surface is a
+    /// node of the body's surface alone and stays on it; a node on a cut's surface that is on
+    /// the body too (a rim node) may go into the body along the cut, never out of it. Empty:
+    /// a node is of the body's surface alone where all its boundary faces lie on the body.
+    std::span<const std::uint8_t> cutSurfaceNodes;
     double density = 1e-3;      ///< g/mm^3, for the masses of Eq. 3
     /// A box no node may move into (the anchored region, whose new nodes are anchored by
     /// position; reference positions).
@@ -119,6 +141,10 @@ struct ImproveResult {
     /// The indices (after the pass) of the tets the flips and splits created, sorted. Nodes
     /// the splits added take the indices after the surviving ones (none had an index before).
     std::vector<int> createdTets;
+    /// Final indices of the nodes the pass put on a cut's surface, sorted: split points of edges
+    /// whose ends both were, and merged nodes of which either end was (the renumbering passes
+    /// a merged node's mark on only where that node had an index at the start).
+    std::vector<int> addedOnCutSurface;
     bool renumbered() const { return !renumbering.empty(); }
 };
 

@@ -30,6 +30,7 @@
 
 #include "core/cut/hybrid_cutter.h"
 #include "core/embed/embedded_surface.h"
+#include "core/mesh/body_surface.h"
 #include "core/mesh/material.h"
 #include "core/mesh/topology.h"
 #include "core/sim/anchors.h"
@@ -211,6 +212,9 @@ private:
     int m_restingCut = -1;
     RestingSurface m_resting;
     double m_inputWorstRatio = 0, m_inputShortestEdge = 0;  ///< of the tissue as created
+    /// The body's surface as created (the improvement keeps every node in the body and the
+    /// nodes of the body's surface on it); shared by copies: it never changes.
+    std::shared_ptr<const BodySurface> m_body;
     int m_stepsSeen = 0;        ///< simulator steps when the tissue last looked
     bool m_indexStale = false;  ///< the tets moved since the spatial index was built
     bool m_surfaceStale = true; ///< the tets moved since the surface last followed them

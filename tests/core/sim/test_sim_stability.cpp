@@ -260,6 +260,28 @@ QString cut(HardCase& c, CutMethod method, CutStats* total = nullptr) {
     return {};
 }
 
+/// Issue 16: no node leaves the body's surface. On the box: how far the farthest node
+/// (reference position) is outside it, and how far the farthest boundary node on no cut's
+/// surface (Tissue::onCutSurface: a node of the box's surface alone) is off its six planes.
+struct OffTheBox {
+    double outside = 0, offSurface = 0;
+};
+OffTheBox offTheBox(const Tissue& tissue) {
+    const TetMesh& m = tissue.mesh();
+    std::vector<char> boundary(m.nodeCount(), 0);
+    for (const BoundaryFace& f : boundaryFaces(m))
+        for (int n : f.nodes)
+            boundary[n] = 1;
+    OffTheBox off;
+    for (int n = 0; n < m.nodeCount(); ++n) {
+        const Vec3 p = m.ref(n);
+        off.outside = std::max(off.outside, std::max(-p.minCoeff(), p.maxCoeff() - kSide));
+        if (boundary[n] && tissue.onCutSurface()[n] == 0)
+            off.offSurface = std::max(off.offSurface, std::min(p.cwiseAbs().minCoeff(), (Vec3::Constant(kSide) - p).cwiseAbs().minCoeff()));
+    }
+    return off;
+}
+
 } // namespace
 
 class TestSimStability : public QObject {
@@ -320,14 +342,18 @@ private slots:
         // The ten scoops of tenScoopsThroughTheTissue, moved about: scoop k through
         // (3.013 + s sin(7k + 1), 2.987 + s cos(5k + 2)) for s = 0, 0.02, ..., 0.5 mm. The worst
         // tet after any cut, over the input's: at least 0.5 in most placements and never
-        // catastrophic. Measured: 16 of 26 at 0.5 or more, 0.51 on average, 0.26 at the
-        // least (the improvement of before issue 16's splits and repeated passes: 2 of 26,
-        // 0.34, 0.02). Issue 16 asks 0.5 everywhere: not reached yet.
+        // catastrophic; no node ever outside the box, and the nodes of its surface within 1 % of
+        // a cell of it (offTheBox). Measured: 19 of 26 at 0.5 or more, 0.544 on average, 0.30
+        // at the least, no node outside, the box's surface nodes at most 0.0051 mm off it in one
+        // placement (exactly on it in the others and in tenScoopsThroughTheTissue). Before the
+        // improvement kept to the body's surface: 16, 0.51, 0.26, with nodes up to 0.43 mm
+        // outside the box; before issue 16's splits and repeated passes: 2, 0.34, 0.02. Issue
+        // 16 asks 0.5 everywhere: not reached yet.
         const TetMesh input = box();
         const double ratio0 = summarizeQuality(input).minRadiusRatio;
         const Material material;
         int good = 0;
-        double sum = 0, least = 1;
+        double sum = 0, least = 1, offSurface = 0;
         const int placements = 26;
         for (int i = 0; i < placements; ++i) {
             const double shift = 0.02 * i;
@@ -345,6 +371,9 @@ private slots:
                 const Status st = tissue.cut(sweep, CutOptions{.snap = true, .relaxSteps = 10});
                 QVERIFY2(st.ok(), st.message().c_str());
                 worst = std::min(worst, summarizeQuality(tissue.mesh()).minRadiusRatio / ratio0);
+                const OffTheBox off = offTheBox(tissue);
+                QVERIFY2(off.outside <= 1e-9 * kSide, qPrintable(QString("placement %1, cut %2: a node %3 mm outside the box").arg(i).arg(k + 1).arg(off.outside)));
+                offSurface = std::max(offSurface, off.offSurface);
             }
             if (const auto problems = checkValidity(tissue.mesh()); !problems.empty())
                 QFAIL(problems.front().message.c_str());
@@ -352,20 +381,24 @@ private slots:
             sum += worst;
             least = std::min(least, worst);
         }
-        qInfo("ten scoops in %d placements: %d at 0.5 x the input's worst ratio or more, %.3f on average, %.3f at the least",
-              placements, good, sum / placements, least);
-        QVERIFY2(good >= 15, qPrintable(QString::number(good)));
-        QVERIFY2(sum / placements >= 0.48, qPrintable(QString::number(sum / placements)));
-        QVERIFY2(least >= 0.25, qPrintable(QString::number(least)));
+        qInfo("ten scoops in %d placements: %d at 0.5 x the input's worst ratio or more, %.3f on average, %.3f at "
+              "the least; nodes of the box's surface at most %.3g mm off it",
+              placements, good, sum / placements, least, offSurface);
+        QVERIFY2(offSurface <= 0.01, qPrintable(QString::number(offSurface)));
+        QVERIFY2(good >= 18, qPrintable(QString::number(good)));
+        QVERIFY2(sum / placements >= 0.53, qPrintable(QString::number(sum / placements)));
+        QVERIFY2(least >= 0.28, qPrintable(QString::number(least)));
     }
 
     void tenScoopsThroughTheTissue() {
         // The ten intersecting scoops as the product makes them (Tissue::cut at the defaults:
         // the mesh improvement after every cut, chips off the anchored base removed): the
         // remaining tissue keeps its worst element within 0.5 times the input's after every
-        // cut (the bare cutter above leaves 3e-5; measured 0.55 at worst), its stable step
-        // within a factor 7 of the input's, and simulates stably at that step. (The same ten
-        // scoops moved by up to 0.5 mm reach 0.5 in 16 placements of 26: tenScoopsMovedAbout.)
+        // cut (the bare cutter above leaves 3e-5; measured 0.52 at worst), no node leaves the
+        // box's surface (none outside it, those of its surface on it up to rounding), its
+        // stable step stays within a factor 7 of the input's, and it simulates stably at that
+        // step. (The same ten scoops moved by up to 0.5 mm reach 0.5 in 19 placements of 26:
+        // tenScoopsMovedAbout.)
         HardCase c = makeCase("ten intersecting scoops");
         const Material material;
         computeLumpedMasses(c.mesh, material.density);
@@ -385,6 +418,10 @@ private slots:
             const double ratio = summarizeQuality(tissue.mesh()).minRadiusRatio;
             worst = std::min(worst, ratio);
             QVERIFY2(ratio >= 0.5 * ratio0, qPrintable(QString("after cut %1: %2 (input %3)").arg(tissue.cutCount()).arg(ratio).arg(ratio0)));
+            const OffTheBox off = offTheBox(tissue);
+            QVERIFY2(off.outside <= 1e-9 * kSide && off.offSurface <= 1e-9 * kSide,
+                     qPrintable(QString("after cut %1: a node %2 mm outside the box, one of its surface %3 mm off it")
+                                    .arg(tissue.cutCount()).arg(off.outside).arg(off.offSurface)));
         }
         QVERIFY(tissue.chips().size() >= 1);
         QVERIFY(std::abs(tissue.mesh().totalReferenceVolume() + tissue.resectedVolume() - volume0) <= 1e-9 * volume0);
@@ -393,7 +430,7 @@ private slots:
               "(input %.3g), stable dt %.3g s (input %.3g s)",
               tissue.mesh().tetCount(), tissue.chips().size(), summarizeQuality(tissue.mesh()).minRadiusRatio, worst,
               ratio0, dt, dt0);
-        QVERIFY(dt >= 0.15 * dt0);  // measured 0.21 x (the bare cutter: 1e-4 x)
+        QVERIFY(dt >= 0.15 * dt0);  // measured 0.40 x (the bare cutter: 1e-4 x)
         if (const auto problems = checkValidity(tissue.mesh()); !problems.empty())
             QFAIL(problems.front().message.c_str());
         HardCase after = c;

@@ -10,6 +10,7 @@
 //    oriented where it is;
 //  - keeps its anchors.
 #include "core/mesh/masses.h"
+#include "core/mesh/body_surface.h"
 #include "core/mesh/box_mesh.h"
 #include "core/mesh/predicates.h"
 #include "core/mesh/quality.h"
@@ -180,7 +181,12 @@ private:
         Surfaces surfaces;
         surfaces.add(input);
         const double meanEdge = tissue.meanEdgeLength();
-        double deviation = 0;
+        // The body as it was: no node goes outside it, and the nodes of its surface that no cut
+        // reached stay on it, up to rounding and to the chordal slack of a smooth curved patch
+        // (BodySurface::side; zero on flat patches and at sharp edges, so exact on the box).
+        const std::shared_ptr<const BodySurface> body = BodySurface::fromBoundary(input);
+        const double outsideBound = 1e-9 * meanEdge;
+        double deviation = 0, outside = 0, offBody = 0;
         int cuts = 0, chips = 0;
         for (int k = 0; k < 20; ++k) {
             SweepSurface sweep;
@@ -234,16 +240,29 @@ private:
             // No node leaves the body's surface or the cut surfaces (the sweeps) by more than the
             // improvement's bounded deviation (ImproveOptions::maxDeviation local boundary edges
             // per pass) allows; in practice far less.
+            std::vector<char> onBoundary(m.nodeCount(), 0);
             for (const BoundaryFace& f : boundaryFaces(m))
-                for (int n : f.nodes)
+                for (int n : f.nodes) {
                     deviation = std::max(deviation, surfaces.distance(m.ref(n)));
+                    onBoundary[n] = 1;
+                }
+            for (int n = 0; n < m.nodeCount(); ++n) {
+                const BodySurface::Side side = body->side(m.ref(n), meanEdge);
+                outside = std::max(outside, side.distance - side.slack);
+                if (onBoundary[n] && tissue.onCutSurface()[n] == 0)
+                    offBody = std::max(offBody, std::abs(side.distance) - side.slack);
+            }
+            QVERIFY2(outside <= outsideBound, qPrintable(at + QString(": a node %1 mean edges outside the body").arg(outside / meanEdge)));
+            QVERIFY2(offBody <= 0.01 * meanEdge,
+                     qPrintable(at + QString(": a node of the body's surface %1 mean edges off it").arg(offBody / meanEdge)));
             QVERIFY2(deviation <= kMaxDeviation * meanEdge,
                      qPrintable(at + QString(": a boundary node %1 mean edges off the surfaces").arg(deviation / meanEdge)));
             // Anchors: one piece holds them all; nothing anchored is lost.
             QCOMPARE(tissue.pieces().count, 1);
             QVERIFY(static_cast<int>(tissue.anchors().nodes().size()) >= anchoredBefore / 2);
         }
-        qInfo("%s: largest boundary deviation %.3g mean edges", qPrintable(mesh), deviation / meanEdge);
+        qInfo("%s: largest boundary deviation %.3g mean edges; outside the body %.3g, body nodes off it %.3g", qPrintable(mesh),
+              deviation / meanEdge, std::max(outside, 0.0) / meanEdge, std::max(offBody, 0.0) / meanEdge);
         QVERIFY(cuts >= 18);
         QVERIFY2(chips >= 5, qPrintable(QString("only %1 chips").arg(chips)));
     }
