@@ -9,11 +9,9 @@
 
 namespace resect {
 
-namespace {
-
-/// Nearest point of triangle (a, b, c) to p by Voronoi regions; `feature` as in
-/// BodySurface::Nearest (0-2 vertex, 3 + i edge (i, i+1), 6 face).
-Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, int& feature) {
+Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, int* featureOut) {
+    int dummy = 0;
+    int& feature = featureOut ? *featureOut : dummy;
     const Vec3 ab = b - a, ac = c - a, ap = p - a;
     const double d1 = ab.dot(ap), d2 = ac.dot(ap);
     if (d1 <= 0 && d2 <= 0) {
@@ -56,8 +54,6 @@ Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& 
     feature = 6;
     return a + ab * (vb * denom) + ac * (vc * denom);
 }
-
-} // namespace
 
 std::shared_ptr<const BodySurface> BodySurface::fromBoundary(const TetMesh& mesh) {
     auto s = std::make_shared<BodySurface>();
@@ -190,7 +186,7 @@ BodySurface::Nearest BodySurface::nearest(const Vec3& p, double range) const {
                     const int t = m_cellTris[i];
                     const Tri& tri = m_tris[t];
                     int feature = 6;
-                    const Vec3 q = closestOnTriangle(p, m_points[tri[0]], m_points[tri[1]], m_points[tri[2]], feature);
+                    const Vec3 q = closestPointOnTriangle(p, m_points[tri[0]], m_points[tri[1]], m_points[tri[2]], &feature);
                     const double d = (p - q).norm();
                     if (d < best.distance || (best.tri < 0 && d <= best.distance)) {
                         best = {d, t, feature, q};

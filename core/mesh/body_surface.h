@@ -15,6 +15,11 @@
 
 namespace resect {
 
+/// The point of triangle (a, b, c) nearest to p, by the Voronoi regions of its corners, edges
+/// and face; `feature` (if given) says which: 0-2 corner i, 3 + i edge (i, i + 1), 6 the face.
+/// A degenerate triangle gives its corner nearest to p.
+Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, int* feature = nullptr);
+
 class BodySurface {
 public:
     /// The boundary faces of `mesh` (outward), at reference positions. Empty for an empty mesh.
