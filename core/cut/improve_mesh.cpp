@@ -100,8 +100,6 @@ constexpr double kBodyTolerance = 1e-9;
 // cut marks it): placements on the old boundary that keep the volume exactly can land off a
 // plane by about kBodyTolerance near the body's sharp edges, and such a node stays held.
 constexpr double kOnBodyTolerance = 1e-6;
-// A boundary face within this many local edge lengths of the body's surface lies on it.
-constexpr double kBodyFace = 0.05;
 
 /// The tet q with node v placed at p (reference positions otherwise).
 std::array<Vec3, 4> cornersWith(const TetMesh& m, const Tet& q, int v, const Vec3& p, bool current) {
@@ -283,32 +281,17 @@ private:
             return it->second;
         return n < static_cast<int>(o.cutSurfaceNodes.size()) && o.cutSurfaceNodes[n] != 0;
     }
-    /// Whether a boundary node with boundary faces `faces` (a merged node: of both ends; its
-    /// boundary ones in `nodesOf`) is a node of the body's surface alone: on the body's surface
-    /// and on no cut's by its marks (a node the marks miss, off the body, is not), or without
-    /// marks, every face lies on the body's surface (corners and centroid within kBodyFace
-    /// local edge lengths `scale` of it, which allows for chords of a curved body).
-    bool bodyOnly(const std::vector<int>& nodesOf, const std::vector<Face>& faces, double scale) const {
-        if (!o.body || faces.empty())
+    /// Whether a boundary node (a merged node: its boundary ends `nodesOf`) is a node of the
+    /// body's surface alone: on no cut's surface by its marks, and on the body's surface (a node
+    /// the marks miss, off the body, is not; it does not free a merged node from the body).
+    bool bodyOnly(const std::vector<int>& nodesOf, double scale) const {
+        if (!o.body || std::any_of(nodesOf.begin(), nodesOf.end(), [&](int n) { return onCut(n); }))
             return false;
-        if (!o.cutSurfaceNodes.empty()) {
-            // (A node the marks miss, off the body, does not free a merged node from the body.)
-            const double eps = kOnBodyTolerance * scale;
-            if (std::any_of(nodesOf.begin(), nodesOf.end(), [&](int n) { return onCut(n); }))
-                return false;
-            return std::any_of(nodesOf.begin(), nodesOf.end(), [&](int n) {
-                const BodySurface::Side s = o.body->side(m.ref(n), 2 * eps);
-                return std::abs(s.distance) <= s.slack + eps;
-            });
-        }
-        const double tolerance = kBodyFace * scale;
-        for (const Face& f : faces) {
-            const Vec3 a = m.ref(f.nodes[0]), b = m.ref(f.nodes[1]), c = m.ref(f.nodes[2]);
-            for (const Vec3& p : {a, b, c, Vec3((a + b + c) / 3)})
-                if (!(o.body->distance(p, 2 * tolerance) <= tolerance))
-                    return false;
-        }
-        return true;
+        const double eps = kOnBodyTolerance * scale;
+        return std::any_of(nodesOf.begin(), nodesOf.end(), [&](int n) {
+            const BodySurface::Side s = o.body->side(m.ref(n), 2 * eps);
+            return std::abs(s.distance) <= s.slack + eps;
+        });
     }
     /// Whether a boundary node moved from `from` to p leaves the body: p is outside it, or the
     /// node is of the body's surface alone (`pure`) and p is off that surface. Both up to the
@@ -615,7 +598,7 @@ private:
             boundaryEnds.push_back(a);
         if (boundaryB)
             boundaryEnds.push_back(b);
-        const bool pure = bodyOnly(boundaryEnds, oldBoundary, edgeScale);
+        const bool pure = bodyOnly(boundaryEnds, edgeScale);
 
         Placement best;
         const Vec3 pa = m.ref(a), pb = m.ref(b);
@@ -696,12 +679,7 @@ private:
             Placement cand;
             cand.ref = p;
             mapToCurrent(before, p, cand.pos, cand.vel);
-            for (const Tet& q : after)
-                if (!positiveWith(m, q, a, cand.pos, true)) {
-                    ok = false;
-                    break;
-                }
-            if (!ok)
+            if (!allPositive(after, a, cand.pos, true))
                 continue;
             cand.worst = worst;
             best = cand;
@@ -725,9 +703,7 @@ private:
                 cand.ref = *x;
                 cand.worst = worstAround(after, a, *x);
                 mapToCurrent(before, *x, cand.pos, cand.vel);
-                bool ok = acceptable(cand.worst) && allPositive(after, a, *x);
-                for (const Tet& q : after)
-                    ok = ok && positiveWith(m, q, a, cand.pos, true);
+                bool ok = acceptable(cand.worst) && allPositive(after, a, *x) && allPositive(after, a, cand.pos, true);
                 if (ok && boundary) {
                     const std::vector<Face> newBoundary = boundaryFacesAt(after, a);
                     ok = !(boundaryA && distanceTo(pa, newBoundary, a, *x) > tolerance) &&
@@ -1125,10 +1101,7 @@ private:
             const double worstAfter = worstAround(children, v, x);
             Vec3 pos = m.pos(v), vel = m.velocities()[v];
             mapToCurrent(old, x, pos, vel);
-            bool ok = worstAfter > worstBefore + kSplitGain && allPositive(children, v, x);
-            for (const Tet& c : children)
-                ok = ok && positiveWith(m, c, v, pos, true);
-            if (!ok) {
+            if (!(worstAfter > worstBefore + kSplitGain && allPositive(children, v, x) && allPositive(children, v, pos, true))) {
                 m.removeNode(v);  // the last node, in no tet yet
                 cutMarkOf.erase(v);
                 continue;
@@ -1164,9 +1137,11 @@ private:
         return worst;
     }
 
-    bool allPositive(const std::vector<Tet>& star, int v, const Vec3& p) const {
+    /// Whether every tet of `star` is positive with node v at p (reference positions, or with
+    /// `current` the deformed ones).
+    bool allPositive(const std::vector<Tet>& star, int v, const Vec3& p, bool current = false) const {
         for (const Tet& q : star)
-            if (!positiveWith(m, q, v, p, false))
+            if (!positiveWith(m, q, v, p, current))
                 return false;
         return true;
     }
@@ -1183,9 +1158,8 @@ private:
             return false;
         Vec3 pos = m.pos(v), vel = m.velocities()[v];
         mapToCurrent(star, *x, pos, vel);
-        for (const Tet& q : star)
-            if (!positiveWith(m, q, v, pos, true))
-                return false;
+        if (!allPositive(star, v, pos, true))
+            return false;
         moveNode(v, *x, pos, vel);
         ++r.smoothed;
         return true;
@@ -1278,7 +1252,7 @@ private:
                 return std::nullopt;
             edgeScale = meanEdgeOf(faces);
             tolerance = o.maxDeviation * edgeScale;
-            pure = bodyOnly({v}, faces, edgeScale);
+            pure = bodyOnly({v}, edgeScale);
         }
         if (boundary)
             normal = gradient.normalized();
@@ -1367,9 +1341,9 @@ private:
             dead.push_back(n);
         std::sort(dead.rbegin(), dead.rend());  // highest first: the last node never is a dead one
         // Nodes added by splits have no index at the start, so the renumbering cannot name
-        // them: the moved and touched nodes follow the removals here instead.
-        // Nodes the pass put on a cut's surface: split points of cut edges, and merged nodes
-        // that took the mark of a node without an index at the start (a split point).
+        // them: the moved and touched nodes, and those the pass put on a cut's surface (split
+        // points of cut edges, merged nodes that took such a point's mark), follow the removals
+        // here instead.
         std::vector<int> movedNow(moved.begin(), moved.end()), touchedNow, addedOnCut;
         for (const auto& [n, mark] : cutMarkOf)
             if (mark && alive(n) && n < m.nodeCount())

@@ -102,10 +102,10 @@ struct ImproveOptions {
     /// boundary only where that is on the body's surface too (on a flat patch, within it).
     const BodySurface* body = nullptr;
     /// Per node (indices at the start of the pass), nonzero where the node lies on a cut's
-    /// surface (Tissue::onCutSurface). With `body`, a boundary node on no cut's surface is a
-    /// node of the body's surface alone and stays on it; a node on a cut's surface that is on
-    /// the body too (a rim node) may go into the body along the cut, never out of it. Empty:
-    /// a node is of the body's surface alone where all its boundary faces lie on the body.
+    /// surface (Tissue::onCutSurface). With `body`, a boundary node on no cut's surface that
+    /// lies on the body's surface is a node of that surface alone and stays on it; a node on a
+    /// cut's surface that is on the body too (a rim node) may go into the body along the cut,
+    /// never out of it. Empty: no node is on a cut's surface.
     std::span<const std::uint8_t> cutSurfaceNodes;
     double density = 1e-3;      ///< g/mm^3, for the masses of Eq. 3
     /// A box no node may move into (the anchored region, whose new nodes are anchored by

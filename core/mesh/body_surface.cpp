@@ -204,24 +204,12 @@ Vec3 BodySurface::featureNormal(const Nearest& n) const {
     return m_faceNormals[n.tri];
 }
 
-double BodySurface::signedDistance(const Vec3& p, double range) const {
-    const Nearest n = nearest(p, range);
-    if (n.tri < 0)
-        return -range;
-    const double side = featureNormal(n).dot(p - n.point);
-    return side > 0 ? n.distance : -n.distance;
-}
-
 BodySurface::Side BodySurface::side(const Vec3& p, double range) const {
     const Nearest n = nearest(p, range);
     if (n.tri < 0)
         return {-range, 0};
     const double side = featureNormal(n).dot(p - n.point);
     return {side > 0 ? n.distance : -n.distance, m_slack[n.tri]};
-}
-
-double BodySurface::distance(const Vec3& p, double range) const {
-    return nearest(p, range).distance;
 }
 
 } // namespace resect

@@ -28,15 +28,12 @@ public:
     bool empty() const { return m_tris.empty(); }
     int triangleCount() const { return static_cast<int>(m_tris.size()); }
 
-    /// Signed distance of p from the surface (positive outside) where a triangle is within
-    /// `range` of p; otherwise -range ("inside"): a caller that moves a point by at most
-    /// `range` from a position inside or on the body passes the surface's triangles on the way
-    /// out, so a point with none within range is still inside.
-    double signedDistance(const Vec3& p, double range) const;
-
-    /// signedDistance(p, range), and how far off the surface the nearest triangle allows: the
-    /// chordal error of a smooth patch (kSharpBend below), zero on a flat patch or at a sharp
-    /// edge or corner, where the surface is what it is.
+    /// The signed distance of p from the surface (positive outside) where a triangle is within
+    /// `range` of p, otherwise -range ("inside": a caller that moves a point by at most `range`
+    /// from a position inside or on the body passes the surface's triangles on the way out, so
+    /// a point with none within range is still inside); and how far off the surface the
+    /// nearest triangle allows: the chordal error of a smooth patch (kSharpBend below), zero on
+    /// a flat patch or at a sharp edge or corner, where the surface is what it is.
     struct Side {
         double distance = 0;
         double slack = 0;
@@ -45,9 +42,6 @@ public:
 
     /// Edges whose faces' normals turn by more than this (radians) are sharp features.
     static constexpr double kSharpBend = 0.5;
-
-    /// Unsigned distance of p from the surface, up to `range` (range where nothing is nearer).
-    double distance(const Vec3& p, double range) const;
 
 private:
     struct Nearest {
