@@ -3,7 +3,11 @@
 #include "core/mesh/predicates.h"
 #include "core/mesh/topology.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -147,6 +151,87 @@ std::vector<MeshProblem> checkValidity(const TetMesh& mesh) {
         }
     }
     return problems;
+}
+
+MeshOverlap deepestOverlap(const TetMesh& mesh) {
+    MeshOverlap worst;
+    if (mesh.tetCount() == 0)
+        return worst;
+    std::vector<char> onBoundary(mesh.nodeCount(), 0);
+    for (const BoundaryFace& f : boundaryFaces(mesh))
+        for (int n : f.nodes)
+            onBoundary[n] = 1;
+    // Tets by the cells of a uniform grid their boxes overlap (cells about a tet wide).
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    double extent = 0;
+    for (int t = 0; t < mesh.tetCount(); ++t) {
+        Eigen::AlignedBox3d box;
+        for (int v : mesh.tet(t))
+            box.extend(mesh.ref(v));
+        if (!box.sizes().allFinite())
+            continue;
+        lo = lo.cwiseMin(box.min());
+        hi = hi.cwiseMax(box.max());
+        extent += box.sizes().maxCoeff();
+    }
+    if (!(lo.array() <= hi.array()).all())
+        return worst;
+    const double cell = std::max(extent / mesh.tetCount(), 1e-300);
+    const Eigen::Array3i dims = (((hi - lo) / cell).array().floor().cast<int>() + 1).min(1 << 9).max(1);
+    const auto cellOf = [&](const Vec3& p) -> Eigen::Array3i {
+        return ((p - lo) / cell).array().floor().cast<int>().max(0).min(dims - 1);
+    };
+    const auto index = [&](const Eigen::Array3i& c) {
+        return (static_cast<std::int64_t>(c.z()) * dims.y() + c.y()) * dims.x() + c.x();
+    };
+    std::unordered_map<std::int64_t, std::vector<int>> grid;
+    for (int t = 0; t < mesh.tetCount(); ++t) {
+        Eigen::AlignedBox3d box;
+        for (int v : mesh.tet(t))
+            box.extend(mesh.ref(v));
+        if (!box.sizes().allFinite())
+            continue;
+        const Eigen::Array3i c0 = cellOf(box.min()), c1 = cellOf(box.max());
+        for (int z = c0.z(); z <= c1.z(); ++z)
+            for (int y = c0.y(); y <= c1.y(); ++y)
+                for (int x = c0.x(); x <= c1.x(); ++x)
+                    grid[index({x, y, z})].push_back(t);
+    }
+    for (int n = 0; n < mesh.nodeCount(); ++n) {
+        const Vec3& p = mesh.ref(n);
+        if (!onBoundary[n] || !finite(p))
+            continue;
+        const auto it = grid.find(index(cellOf(p)));
+        if (it == grid.end())
+            continue;
+        for (int t : it->second) {
+            const Tet& q = mesh.tet(t);
+            const std::array<Vec3, 4> c = {mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3])};
+            bool corner = false;
+            for (int i = 0; i < 4; ++i)
+                corner = corner || q[i] == n || c[i] == p;
+            if (corner)
+                continue;
+            // Depth: the distance to the nearest face plane, positive inside.
+            double depth = std::numeric_limits<double>::infinity();
+            for (int i = 0; i < 4 && depth > worst.depth; ++i) {
+                const Vec3 &a = c[(i + 1) % 4], &b = c[(i + 2) % 4], &d = c[(i + 3) % 4];
+                Vec3 normal = (b - a).cross(d - a);
+                const double length = normal.norm();
+                if (!(length > 0)) {
+                    depth = 0;
+                    break;
+                }
+                normal /= length;
+                if (normal.dot(c[i] - a) < 0)
+                    normal = -normal;  // towards the opposite corner: inside
+                depth = std::min(depth, normal.dot(p - a));
+            }
+            if (depth > worst.depth)
+                worst = {depth, n, t};
+        }
+    }
+    return worst;
 }
 
 } // namespace resect

@@ -30,4 +30,17 @@ const char* toString(MeshProblem::Kind kind);
 /// current tets are reported as problems too; the caller decides what is fatal.
 std::vector<MeshProblem> checkValidity(const TetMesh& mesh);
 
+/// Where the mesh overlaps itself most (reference configuration): the boundary node lying
+/// deepest inside a tet it is not a corner of (no corner of the tet at its position either:
+/// separated cut nodes coincide by design), with its depth, the distance to the tet's nearest
+/// face plane. Tets that overlap have a boundary node in another tet (or edges that cross
+/// faces, which this does not look for). A conforming mesh has depth 0; rounding leaves
+/// points computed on a shared surface (a cut's) about 1e-16 of an edge inside their
+/// neighbours. Cost: a grid over the tets, O(mesh).
+struct MeshOverlap {
+    double depth = 0;  ///< 0: none
+    int node = -1, tet = -1;
+};
+MeshOverlap deepestOverlap(const TetMesh& mesh);
+
 } // namespace resect

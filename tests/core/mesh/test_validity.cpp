@@ -151,6 +151,45 @@ private slots:
         QVERIFY2(problems.empty(), qPrintable(describe(problems)));
     }
 
+    // deepestOverlap: none in valid meshes (at three scales, and across a cut whose sides are
+    // triangulated differently); the depth of a corner pushed into the neighbouring tet.
+    void noOverlapInValidMeshes_data() { validMeshesAreClean_data(); }
+    void noOverlapInValidMeshes() {
+        QFETCH(double, scale);
+        const TetMesh m = makeBoxTetMesh(Vec3::Zero(), Vec3(1, 2, 3) * scale, 3, 2, 4);
+        QCOMPARE(deepestOverlap(m).depth, 0.0);
+        QCOMPARE(deepestOverlap(m).node, -1);
+        const Vec3 mid = (a + b) / 2;
+        const TetMesh cut = TetMesh::fromArrays({a * scale, b * scale, c * scale, d * scale, a * scale, b * scale,
+                                                 c * scale, e * scale, mid * scale},
+                                                {{0, 1, 2, 3}, {4, 6, 8, 7}, {8, 6, 5, 7}});
+        QCOMPARE(deepestOverlap(cut).depth, 0.0);
+    }
+    void overlapDepth_data() { validMeshesAreClean_data(); }
+    void overlapDepth() {
+        QFETCH(double, scale);
+        // Two separate tets (the lower one with its own copies of a, b, c, as after a cut),
+        // then the lower one's copy of a pushed up into the upper one, 0.1 above the plane of
+        // abc (the upper tet's nearest face there).
+        const Vec3 inside = Vec3(0.3, 0.3, 0.1);
+        const TetMesh m = TetMesh::fromArrays({a * scale, b * scale, c * scale, d * scale, inside * scale, b * scale,
+                                               c * scale, e * scale},
+                                              {{0, 1, 2, 3}, {4, 6, 5, 7}});
+        const MeshOverlap o = deepestOverlap(m);
+        QCOMPARE(o.node, 4);
+        QCOMPARE(o.tet, 0);
+        QVERIFY2(std::abs(o.depth - 0.1 * scale) <= 1e-12 * scale, qPrintable(QString::number(o.depth)));
+        // Sharing a node does not hide it: the same with the lower tet on the upper one's b, c.
+        const TetMesh shared = TetMesh::fromArrays({a * scale, b * scale, c * scale, d * scale, inside * scale, e * scale},
+                                                   {{0, 1, 2, 3}, {4, 2, 1, 5}});
+        QCOMPARE(deepestOverlap(shared).node, 4);
+        // Non-finite coordinates are skipped, not trusted.
+        TetMesh bad = m;
+        bad.setNodePosition(4, Vec3::Constant(std::numeric_limits<double>::quiet_NaN()),
+                            Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
+        QCOMPARE(deepestOverlap(bad).node, -1);
+    }
+
     void problemsNameTheElement() {
         const TetMesh m = TetMesh::fromArrays({a, b, c, Vec3(1, 1, 0)}, {{0, 1, 2, 3}});
         const auto problems = checkValidity(m);

@@ -8,7 +8,8 @@
 //  - with the resected chips, holds the input's volume and mass to 1e-9;
 //  - is valid (no inverted or degenerate tet, conforming faces, no unused node) and positively
 //    oriented where it is;
-//  - keeps its anchors.
+//  - keeps its anchors;
+//  - does not overlap itself (scoops on the polyp and the box; measured on the others).
 #include "core/mesh/masses.h"
 #include "core/mesh/body_surface.h"
 #include "core/mesh/box_mesh.h"
@@ -186,7 +187,7 @@ private:
         // (BodySurface::side; zero on flat patches and at sharp edges, so exact on the box).
         const std::shared_ptr<const BodySurface> body = BodySurface::fromBoundary(input);
         const double outsideBound = 1e-9 * meanEdge;
-        double deviation = 0, outside = 0, offBody = 0;
+        double deviation = 0, outside = 0, offBody = 0, overlap = 0;
         int cuts = 0, chips = 0;
         for (int k = 0; k < 20; ++k) {
             SweepSurface sweep;
@@ -255,14 +256,25 @@ private:
             QVERIFY2(outside <= outsideBound, qPrintable(at + QString(": a node %1 mean edges outside the body").arg(outside / meanEdge)));
             QVERIFY2(offBody <= 0.01 * meanEdge,
                      qPrintable(at + QString(": a node of the body's surface %1 mean edges off it").arg(offBody / meanEdge)));
+            // The tets do not overlap (no tet straddles a cut): beyond rounding, no boundary node
+            // lies inside a tet it is not a corner of. Not everywhere yet: where both walls of a
+            // crack stay in the tissue (a stroke cut partway in, a scoop that leaves its chip
+            // hanging on the myoma) the improvement pushes them into each other, by up to 0.12
+            // mean edges on these rows (issue 16's note); the polyp's and the box's scoops hold
+            // it, and the rest is measured and printed.
+            const MeshOverlap o = deepestOverlap(m);
+            overlap = std::max(overlap, o.depth);
+            if (!withStrokes && mesh != "myoma")
+                QVERIFY2(o.depth <= 1e-9 * meanEdge,
+                         qPrintable(at + QString(": node %1 is %2 mean edges deep in tet %3").arg(o.node).arg(o.depth / meanEdge).arg(o.tet)));
             QVERIFY2(deviation <= kMaxDeviation * meanEdge,
                      qPrintable(at + QString(": a boundary node %1 mean edges off the surfaces").arg(deviation / meanEdge)));
             // Anchors: one piece holds them all; nothing anchored is lost.
             QCOMPARE(tissue.pieces().count, 1);
             QVERIFY(static_cast<int>(tissue.anchors().nodes().size()) >= anchoredBefore / 2);
         }
-        qInfo("%s: largest boundary deviation %.3g mean edges; outside the body %.3g, body nodes off it %.3g", qPrintable(mesh),
-              deviation / meanEdge, std::max(outside, 0.0) / meanEdge, std::max(offBody, 0.0) / meanEdge);
+        qInfo("%s: largest boundary deviation %.3g mean edges; outside the body %.3g, body nodes off it %.3g; overlap %.3g", qPrintable(mesh),
+              deviation / meanEdge, std::max(outside, 0.0) / meanEdge, std::max(offBody, 0.0) / meanEdge, overlap / meanEdge);
         QVERIFY(cuts >= 18);
         QVERIFY2(chips >= 5, qPrintable(QString("only %1 chips").arg(chips)));
     }
