@@ -20,6 +20,22 @@ bool finite(const Vec3& p) { return std::isfinite(p.x()) && std::isfinite(p.y())
 
 std::string tetName(int t) { return "tet " + std::to_string(t); }
 
+/// A uniform grid's cells over the box [lo, hi]: at most maxDim cells along an axis, points
+/// outside clamped to the nearest cell.
+struct Cells {
+    Vec3 lo;
+    double size;
+    Eigen::Array3i dims;
+    Cells(const Vec3& lo_, const Vec3& hi, double size_, int maxDim)
+        : lo(lo_), size(size_), dims((((hi - lo_) / size_).array().floor().cast<int>() + 1).min(maxDim).max(1)) {}
+    Eigen::Array3i of(const Vec3& p) const {
+        return ((p - lo) / size).array().floor().cast<int>().max(0).min(dims - 1);
+    }
+    std::int64_t index(const Eigen::Array3i& c) const {
+        return (static_cast<std::int64_t>(c.z()) * dims.y() + c.y()) * dims.x() + c.x();
+    }
+};
+
 } // namespace
 
 const char* toString(MeshProblem::Kind kind) {
@@ -106,31 +122,22 @@ std::vector<MeshProblem> checkValidity(const TetMesh& mesh) {
             }
             sizeSum += (mesh.ref(f->nodes[1]) - mesh.ref(f->nodes[0])).norm();
         }
-        const double cell = std::max(sizeSum / boundary.size(), 1e-300);
-        const Eigen::Array3i dims =
-            (((hi - lo) / cell).array().floor().cast<int>() + 1).min(1 << 10).max(1);
-        const auto cellOf = [&](const Vec3& p) -> Eigen::Array3i {
-            const Eigen::Array3i c = ((p - lo) / cell).array().floor().cast<int>();
-            return c.max(0).min(dims - 1);
-        };
-        const auto cellIndex = [&](const Eigen::Array3i& c) {
-            return (static_cast<std::int64_t>(c.z()) * dims.y() + c.y()) * dims.x() + c.x();
-        };
+        const Cells cells(lo, hi, std::max(sizeSum / boundary.size(), 1e-300), 1 << 10);
         std::unordered_map<std::int64_t, std::vector<int>> grid;
         for (int v : boundaryNodes)
             if (!badNode[v])
-                grid[cellIndex(cellOf(mesh.ref(v)))].push_back(v);
+                grid[cells.index(cells.of(mesh.ref(v)))].push_back(v);
         for (const MeshFace* f : boundary) {
             const Tri& n = f->nodes;
             if (badNode[n[0]] || badNode[n[1]] || badNode[n[2]])
                 continue;
             const Vec3 &pa = mesh.ref(n[0]), &pb = mesh.ref(n[1]), &pc = mesh.ref(n[2]);
-            const Eigen::Array3i c0 = cellOf(pa.cwiseMin(pb).cwiseMin(pc));
-            const Eigen::Array3i c1 = cellOf(pa.cwiseMax(pb).cwiseMax(pc));
+            const Eigen::Array3i c0 = cells.of(pa.cwiseMin(pb).cwiseMin(pc));
+            const Eigen::Array3i c1 = cells.of(pa.cwiseMax(pb).cwiseMax(pc));
             for (int z = c0.z(); z <= c1.z(); ++z)
                 for (int y = c0.y(); y <= c1.y(); ++y)
                     for (int x = c0.x(); x <= c1.x(); ++x) {
-                        auto it = grid.find(cellIndex({x, y, z}));
+                        auto it = grid.find(cells.index({x, y, z}));
                         if (it == grid.end())
                             continue;
                         for (int v : it->second) {
@@ -162,46 +169,36 @@ MeshOverlap deepestOverlap(const TetMesh& mesh) {
         for (int n : f.nodes)
             onBoundary[n] = 1;
     // Tets by the cells of a uniform grid their boxes overlap (cells about a tet wide).
+    std::vector<Eigen::AlignedBox3d> boxes(mesh.tetCount());
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
     double extent = 0;
     for (int t = 0; t < mesh.tetCount(); ++t) {
-        Eigen::AlignedBox3d box;
         for (int v : mesh.tet(t))
-            box.extend(mesh.ref(v));
-        if (!box.sizes().allFinite())
+            boxes[t].extend(mesh.ref(v));
+        if (!boxes[t].sizes().allFinite())
             continue;
-        lo = lo.cwiseMin(box.min());
-        hi = hi.cwiseMax(box.max());
-        extent += box.sizes().maxCoeff();
+        lo = lo.cwiseMin(boxes[t].min());
+        hi = hi.cwiseMax(boxes[t].max());
+        extent += boxes[t].sizes().maxCoeff();
     }
     if (!(lo.array() <= hi.array()).all())
         return worst;
-    const double cell = std::max(extent / mesh.tetCount(), 1e-300);
-    const Eigen::Array3i dims = (((hi - lo) / cell).array().floor().cast<int>() + 1).min(1 << 9).max(1);
-    const auto cellOf = [&](const Vec3& p) -> Eigen::Array3i {
-        return ((p - lo) / cell).array().floor().cast<int>().max(0).min(dims - 1);
-    };
-    const auto index = [&](const Eigen::Array3i& c) {
-        return (static_cast<std::int64_t>(c.z()) * dims.y() + c.y()) * dims.x() + c.x();
-    };
+    const Cells cells(lo, hi, std::max(extent / mesh.tetCount(), 1e-300), 1 << 9);
     std::unordered_map<std::int64_t, std::vector<int>> grid;
     for (int t = 0; t < mesh.tetCount(); ++t) {
-        Eigen::AlignedBox3d box;
-        for (int v : mesh.tet(t))
-            box.extend(mesh.ref(v));
-        if (!box.sizes().allFinite())
+        if (!boxes[t].sizes().allFinite())
             continue;
-        const Eigen::Array3i c0 = cellOf(box.min()), c1 = cellOf(box.max());
+        const Eigen::Array3i c0 = cells.of(boxes[t].min()), c1 = cells.of(boxes[t].max());
         for (int z = c0.z(); z <= c1.z(); ++z)
             for (int y = c0.y(); y <= c1.y(); ++y)
                 for (int x = c0.x(); x <= c1.x(); ++x)
-                    grid[index({x, y, z})].push_back(t);
+                    grid[cells.index({x, y, z})].push_back(t);
     }
     for (int n = 0; n < mesh.nodeCount(); ++n) {
         const Vec3& p = mesh.ref(n);
         if (!onBoundary[n] || !finite(p))
             continue;
-        const auto it = grid.find(index(cellOf(p)));
+        const auto it = grid.find(cells.index(cells.of(p)));
         if (it == grid.end())
             continue;
         for (int t : it->second) {
