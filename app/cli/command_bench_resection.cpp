@@ -12,7 +12,10 @@
 // (any format loadAnatomy reads, meshed at the default edge length). After every pass the
 // remaining tissue is measured: tets, worst radius ratio (3 r_in / R_circ), shortest edge
 // (reference), stable explicit time step (stable_time_step.h), the pass's wall time
-// (TissueCut::totalMs), the chips resected so far, and the ratios to the input's values.
+// (TissueCut::totalMs), the chips resected so far, the ratios to the input's values, and the
+// tissue's overlap with itself (deepestOverlap, core/mesh/validity.h: the depth of the boundary
+// node deepest inside a tet it is not a corner of; `overlap` in mm, `overlap_rel` in the
+// input's mean edges; issue 16's known defect where both walls of a crack stay).
 // A failed cut is recorded (status "failed", the tissue as it was) and ends that series only.
 //
 // Writes DIR/resection.csv (one row per mesh, method and pass), DIR/resection.md (inputs;
@@ -25,6 +28,7 @@
 
 #include "core/mesh/quality.h"
 #include "core/mesh/stable_time_step.h"
+#include "core/mesh/validity.h"
 #include "core/mesh/topology.h"
 #include "core/mesher/samples.h"
 #include "core/sweep/stroke_shapes.h"
@@ -207,6 +211,10 @@ struct Measures {
     double worstRatio = 0;   ///< smallest radius ratio 3 r_in / R_circ
     double shortestEdge = 0; ///< reference configuration
     double stableDt = 0;     ///< s, stableTimeStep()
+    double meanEdge = 0;     ///< reference configuration
+    /// Depth of the boundary node deepest inside a tet it is not a corner of (deepestOverlap,
+    /// reference configuration): the tissue overlapping itself, 0 up to rounding when it does not.
+    double overlap = 0;
 };
 
 Measures measure(const TetMesh& mesh, const Material& material) {
@@ -214,9 +222,17 @@ Measures measure(const TetMesh& mesh, const Material& material) {
     m.tets = mesh.tetCount();
     m.worstRatio = summarizeQuality(mesh).minRadiusRatio;
     m.shortestEdge = std::numeric_limits<double>::infinity();
-    for (const auto& e : uniqueEdges(mesh))
-        m.shortestEdge = std::min(m.shortestEdge, (mesh.ref(e[0]) - mesh.ref(e[1])).norm());
+    double sum = 0;
+    std::size_t count = 0;
+    for (const auto& e : uniqueEdges(mesh)) {
+        const double length = (mesh.ref(e[0]) - mesh.ref(e[1])).norm();
+        m.shortestEdge = std::min(m.shortestEdge, length);
+        sum += length;
+        ++count;
+    }
+    m.meanEdge = count ? sum / static_cast<double>(count) : 0;
     m.stableDt = stableTimeStep(mesh, material).dt;
+    m.overlap = deepestOverlap(mesh).depth;
     return m;
 }
 
@@ -231,6 +247,8 @@ struct PassRow {
     double ratioRel() const { return after.worstRatio / input.worstRatio; }
     double edgeRel() const { return after.shortestEdge / input.shortestEdge; }
     double dtRel() const { return after.stableDt / input.stableDt; }
+    /// The overlap in the input's mean edges.
+    double overlapRel() const { return input.meanEdge > 0 ? after.overlap / input.meanEdge : 0; }
 };
 
 /// One series: `passes` scoops with one method on a copy of `start`; stops at a failed cut.
@@ -267,7 +285,7 @@ std::string resectionCsv(const std::vector<PassRow>& rows) {
     std::string s =
         "mesh,method,pass,status,tets,worst_ratio,shortest_edge,stable_dt,ms,chips,tets_rel,"
         "worst_ratio_rel,shortest_edge_rel,stable_dt_rel,input_tets,input_worst_ratio,"
-        "input_shortest_edge,input_stable_dt,message\n";
+        "input_shortest_edge,input_stable_dt,overlap,overlap_rel,message\n";
     for (const PassRow& r : rows)
         s += r.mesh + "," + r.method + "," + std::to_string(r.pass) + "," +
              (r.failure.empty() ? "ok" : "failed") + "," + std::to_string(r.after.tets) + "," +
@@ -277,7 +295,8 @@ std::string resectionCsv(const std::vector<PassRow>& rows) {
              format("%.6g", r.ratioRel()) + "," + format("%.6g", r.edgeRel()) + "," +
              format("%.6g", r.dtRel()) + "," + std::to_string(r.input.tets) + "," +
              format("%.6g", r.input.worstRatio) + "," + format("%.6g", r.input.shortestEdge) + "," +
-             format("%.6g", r.input.stableDt) + "," + r.failure + "\n";
+             format("%.6g", r.input.stableDt) + "," + format("%.6g", r.after.overlap) + "," +
+             format("%.6g", r.overlapRel()) + "," + r.failure + "\n";
     return s;
 }
 
@@ -303,21 +322,22 @@ std::string passesMarkdown(const std::vector<PassRow>& rows, int passes) {
         reported.push_back(passes);
     std::string s = "| mesh | method | pass | tets | tets / input | worst ratio | / input | "
                     "shortest edge | / input | "
-                    "stable dt (s) | / input | ms | chips |\n"
-                    "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+                    "stable dt (s) | / input | ms | chips | overlap (mean edges) |\n"
+                    "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     std::string failures;
     for (std::size_t begin = 0; begin < rows.size();) {
         std::size_t end = begin;
         while (end < rows.size() && rows[end].mesh == rows[begin].mesh &&
                rows[end].method == rows[begin].method)
             ++end;
-        double minTets = INFINITY, minRatio = INFINITY, minEdge = INFINITY, minDt = INFINITY;
+        double minTets = INFINITY, minRatio = INFINITY, minEdge = INFINITY, minDt = INFINITY, maxOverlap = 0;
         for (std::size_t i = begin; i < end; ++i) {
             const PassRow& r = rows[i];
             minTets = std::min(minTets, r.tetsRel());
             minRatio = std::min(minRatio, r.ratioRel());
             minEdge = std::min(minEdge, r.edgeRel());
             minDt = std::min(minDt, r.dtRel());
+            maxOverlap = std::max(maxOverlap, r.overlapRel());
             if (!r.failure.empty())
                 failures += "- " + r.mesh + " / " + r.method + ": the cut of pass " +
                             std::to_string(r.pass) + " failed (" + r.failure +
@@ -331,12 +351,13 @@ std::string passesMarkdown(const std::vector<PassRow>& rows, int passes) {
                  " | " + format("%.3g", r.ratioRel()) + " | " +
                  format("%.4g", r.after.shortestEdge) + " | " + format("%.3g", r.edgeRel()) +
                  " | " + format("%.3g", r.after.stableDt) + " | " + format("%.3g", r.dtRel()) +
-                 " | " + format("%.1f", r.ms) + " | " + std::to_string(r.chips) + " |\n";
+                 " | " + format("%.1f", r.ms) + " | " + std::to_string(r.chips) + " | " +
+                 format("%.2g", r.overlapRel()) + " |\n";
         }
         s += "| " + rows[begin].mesh + " | " + rows[begin].method + " | min over " +
              std::to_string(end - begin) + " | | " + format("%.3g", minTets) + " | | " +
              format("%.3g", minRatio) + " | | " + format("%.3g", minEdge) + " | | " +
-             format("%.3g", minDt) + " | | |\n";
+             format("%.3g", minDt) + " | | | max " + format("%.2g", maxOverlap) + " |\n";
         begin = end;
     }
     return failures.empty() ? s : s + "\n" + failures;

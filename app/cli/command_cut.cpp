@@ -137,7 +137,7 @@ int runCut(Args args) {
     if (box && tissue.anchors().empty())
         badInput("--fix-box: no node of " + files[0] + " lies in the box");
     tissue.setResectedPieces(box ? resected : ResectedPieces::Keep);
-    int collapsed = 0, smoothed = 0, removedTets = 0;
+    int collapsed = 0, smoothed = 0, removedTets = 0, flips = 0, splits = 0, improveAddedTets = 0;
     double improveMs = 0;
     CutStats total;
     int surfaceSplitEdges = 0, surfaceCapTriangles = 0;
@@ -151,6 +151,9 @@ int runCut(Args args) {
         collapsed += cut.collapsedEdges;
         smoothed += cut.smoothedNodes;
         removedTets += cut.removedTets;
+        flips += cut.flips;
+        splits += cut.splits;
+        improveAddedTets += cut.improveAddedTets;
         improveMs += cut.improveMs;
     }
     writeMeshOutput(out, tissue.mesh());
@@ -203,6 +206,9 @@ int runCut(Args args) {
                                          {"collapsed_edges", collapsed},
                                          {"smoothed_nodes", smoothed},
                                          {"removed_tets", removedTets},
+                                         {"flips", flips},
+                                         {"splits", splits},
+                                         {"added_tets", improveAddedTets},
                                          {"time_ms", improveMs}};
         QJsonObject r;
         r["resected"] = QJsonObject{{"policy", box ? resectedPiecesName(resected) : "none"},

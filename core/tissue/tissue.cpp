@@ -395,10 +395,14 @@ std::vector<int> Tissue::improve(TissueCut& result, const std::vector<int>& seed
     io.maxDeviation = kImproveMaxDeviation;
     const ImproveRegion region = improveRegion(*m_mesh, seeds, m_anchors.nodes(), io.rings);
     const EmbeddedSurface::RemeshRecord record = m_surface.recordAround(*m_mesh, region.tets);
+    const int tetsBefore = m_mesh->tetCount();
     const ImproveResult r = improveMesh(*m_mesh, region, io);
     result.collapsedEdges += r.collapses;
     result.smoothedNodes += r.smoothed;
     result.removedTets += r.removedTets;
+    result.flips += r.flips;
+    result.splits += r.splits;
+    result.improveAddedTets += m_mesh->tetCount() - tetsBefore + r.removedTets;
     if (r.movedNodes.empty() && !r.renumbered())
         return {};
     // The nodes of the tets the pass left bad, for another pass around them.

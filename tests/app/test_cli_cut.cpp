@@ -234,6 +234,8 @@ private slots:
         const QJsonObject on = readJson(path("i.json"))["cut"].toObject()["improvement"].toObject();
         QCOMPARE(on["enabled"].toBool(), true);
         QVERIFY(on["collapsed_edges"].toInt() >= 0 && on["smoothed_nodes"].toInt() >= 0);
+        for (const char* key : {"removed_tets", "flips", "splits", "added_tets"})
+            QVERIFY2(on[key].isDouble() && on[key].toInt() >= 0, key);
         r = runCli({"cut", path("box.vtu"), "--sweep", path("near.json"), "--out", path("o.vtu"), "--report",
                     path("o.json"), "--improve", "off"});
         QVERIFY2(r.code == 0, qPrintable(r.err));
@@ -241,6 +243,8 @@ private slots:
         QCOMPARE(off["enabled"].toBool(), false);
         QCOMPARE(off["collapsed_edges"].toInt(), 0);
         QCOMPARE(off["smoothed_nodes"].toInt(), 0);
+        for (const char* key : {"removed_tets", "flips", "splits", "added_tets"})
+            QCOMPARE(off[key].toInt(), 0);
     }
 
     void cliAndReplayCutBitIdentically() {
