@@ -353,7 +353,7 @@ private slots:
         const double ratio0 = summarizeQuality(input).minRadiusRatio;
         const Material material;
         int good = 0;
-        double sum = 0, least = 1, offSurface = 0;
+        double sum = 0, least = 1, offSurface = 0, overlap = 0;
         const int placements = 26;
         for (int i = 0; i < placements; ++i) {
             const double shift = 0.02 * i;
@@ -374,6 +374,7 @@ private slots:
                 const OffTheBox off = offTheBox(tissue);
                 QVERIFY2(off.outside <= 1e-9 * kSide, qPrintable(QString("placement %1, cut %2: a node %3 mm outside the box").arg(i).arg(k + 1).arg(off.outside)));
                 offSurface = std::max(offSurface, off.offSurface);
+                overlap = std::max(overlap, deepestOverlap(tissue.mesh()).depth);
             }
             if (const auto problems = checkValidity(tissue.mesh()); !problems.empty())
                 QFAIL(problems.front().message.c_str());
@@ -382,8 +383,12 @@ private slots:
             least = std::min(least, worst);
         }
         qInfo("ten scoops in %d placements: %d at 0.5 x the input's worst ratio or more, %.3f on average, %.3f at "
-              "the least; nodes of the box's surface at most %.3g mm off it",
-              placements, good, sum / placements, least, offSurface);
+              "the least; nodes of the box's surface at most %.3g mm off it; overlap %.3g mm",
+              placements, good, sum / placements, least, offSurface, overlap);
+        // Known defect (README, "crack walls overlap"): the improvement reaches these figures
+        // partly by pushing one wall of a crack into the other (0.22 mm, measured). Issue 16
+        // asks for none; this bound only keeps it from growing unseen.
+        QVERIFY2(overlap <= 0.25, qPrintable(QString::number(overlap)));
         QVERIFY2(offSurface <= 0.01, qPrintable(QString::number(offSurface)));
         QVERIFY2(good >= 18, qPrintable(QString::number(good)));
         QVERIFY2(sum / placements >= 0.53, qPrintable(QString::number(sum / placements)));
@@ -410,13 +415,14 @@ private slots:
         Tissue tissue;
         QVERIFY(Tissue::create(c.mesh, {}, material, anchors, tissue).ok());
         tissue.setResectedPieces(ResectedPieces::Remove);
-        double worst = 1;
+        double worst = 1, overlap = 0;
         for (const SweepSurface& sweep : c.sweeps) {
             TissueCut cut;
             const Status st = tissue.cut(sweep, CutOptions{.snap = true, .relaxSteps = 10}, &cut);
             QVERIFY2(st.ok(), st.message().c_str());
             const double ratio = summarizeQuality(tissue.mesh()).minRadiusRatio;
             worst = std::min(worst, ratio);
+            overlap = std::max(overlap, deepestOverlap(tissue.mesh()).depth);
             QVERIFY2(ratio >= 0.5 * ratio0, qPrintable(QString("after cut %1: %2 (input %3)").arg(tissue.cutCount()).arg(ratio).arg(ratio0)));
             const OffTheBox off = offTheBox(tissue);
             QVERIFY2(off.outside <= 1e-9 * kSide && off.offSurface <= 1e-9 * kSide,
@@ -427,9 +433,12 @@ private slots:
         QVERIFY(std::abs(tissue.mesh().totalReferenceVolume() + tissue.resectedVolume() - volume0) <= 1e-9 * volume0);
         const double dt = stableTimeStep(tissue.mesh(), material).dt;
         qInfo("ten scoops through the tissue: %d tets, %zu chips, min radius ratio %.3g at the end, %.3g at worst "
-              "(input %.3g), stable dt %.3g s (input %.3g s)",
+              "(input %.3g), stable dt %.3g s (input %.3g s); overlap %.3g mm",
               tissue.mesh().tetCount(), tissue.chips().size(), summarizeQuality(tissue.mesh()).minRadiusRatio, worst,
-              ratio0, dt, dt0);
+              ratio0, dt, dt0, overlap);
+        // Known defect (README, "crack walls overlap"): from the third cut on, one wall of a
+        // crack is pushed 0.19 mm into another (measured). This bound keeps it from growing unseen.
+        QVERIFY2(overlap <= 0.2, qPrintable(QString::number(overlap)));
         QVERIFY(dt >= 0.15 * dt0);  // measured 0.40 x (the bare cutter: 1e-4 x)
         if (const auto problems = checkValidity(tissue.mesh()); !problems.empty())
             QFAIL(problems.front().message.c_str());
