@@ -188,6 +188,7 @@ int runCut(Args args) {
         cut["snapped_nodes"] = total.snappedNodes;
         cut["refused_snaps"] = total.refusedSnaps;
         cut["decomposed_tets"] = total.decomposedTets;
+        cut["added_tets"] = total.addedTets;
         cut["separated_tets"] = total.separatedTets;
         cut["max_cut_node_distance"] = total.maxCutNodeDistance;
         cut["time_ms"] = QJsonObject{{"intersect", total.timeMs.intersect},

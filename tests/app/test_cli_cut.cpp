@@ -236,6 +236,15 @@ private slots:
         QVERIFY(on["collapsed_edges"].toInt() >= 0 && on["smoothed_nodes"].toInt() >= 0);
         for (const char* key : {"removed_tets", "flips", "splits", "added_tets"})
             QVERIFY2(on[key].isDouble() && on[key].toInt() >= 0, key);
+        {
+            // The counts add up: tets before, plus the cut's and the improvement's added ones,
+            // minus the removed ones, are the tets after (no piece is resected without --fix-box).
+            const QJsonObject report = readJson(path("i.json"));
+            const int before = report["before"].toObject()["tets"].toInt(), after = report["after"].toObject()["tets"].toInt();
+            const int added = report["cut"].toObject()["added_tets"].toInt();
+            QVERIFY(added >= 0);
+            QCOMPARE(after, before + added + on["added_tets"].toInt() - on["removed_tets"].toInt());
+        }
         r = runCli({"cut", path("box.vtu"), "--sweep", path("near.json"), "--out", path("o.vtu"), "--report",
                     path("o.json"), "--improve", "off"});
         QVERIFY2(r.code == 0, qPrintable(r.err));
