@@ -59,11 +59,12 @@ struct TissueCut {
     double improveMs = 0;    ///< the improvement step (0 if off)
     int collapsedEdges = 0;  ///< edges the improvement collapsed
     int smoothedNodes = 0;   ///< nodes it moved to raise their worst tet
-    int removedTets = 0;     ///< tets the collapses (and 3-2 flips) removed
+    int removedTets = 0;     ///< tets the collapses removed, and flips that made fewer than they replaced
     int flips = 0;           ///< 2-3 flips and edge removals the improvement made
     int splits = 0;          ///< edges it split (nodes added)
-    /// Tets its 2-3 flips and splits added: the tissue's tets and this cut's chips' together
-    /// number those before plus tets.addedTets + improveAddedTets - removedTets.
+    /// Tets its flips (2-3, and edge removals of 5 or more tets) and splits added: the tissue's
+    /// tets and this cut's chips' together number those before plus tets.addedTets +
+    /// improveAddedTets - removedTets.
     int improveAddedTets = 0;
     /// The running simulation was rebuilt (tets were resected or renumbered): pointers to it
     /// or its effects taken before the cut are stale.
