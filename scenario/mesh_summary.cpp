@@ -44,6 +44,7 @@ QJsonObject meshStatsJson(const TetMesh& mesh, const Material& material) {
     o["pieces"] = connectedComponents(mesh).count;
     o["boundary_faces"] = static_cast<int>(boundaryFaces(mesh).size());
     o["inverted"] = inverted;
+    o["overlap"] = number(deepestOverlap(mesh).depth);
     return o;
 }
 

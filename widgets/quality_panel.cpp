@@ -348,14 +348,14 @@ void QualityPanel::onPicked(int tet) {
     emit tetPicked(tet);
 }
 
-void QualityPanel::setBeforeMesh(const TetMesh& mesh, double stableDt) {
+void QualityPanel::setBeforeMesh(const TetMesh& mesh, double stableDt, double overlap) {
     m_histogram->setQualities(QualityHistogram::Series::Before, resect::tetQualities(mesh));
-    m_table->setSummary(QualitySummaryTable::Before, summarizeQuality(mesh), stableDt);
+    m_table->setSummary(QualitySummaryTable::Before, summarizeQuality(mesh), stableDt, overlap);
 }
 
-void QualityPanel::setAfterMesh(const TetMesh& mesh, double stableDt) {
+void QualityPanel::setAfterMesh(const TetMesh& mesh, double stableDt, double overlap) {
     m_histogram->setQualities(QualityHistogram::Series::After, resect::tetQualities(mesh));
-    m_table->setSummary(QualitySummaryTable::After, summarizeQuality(mesh), stableDt);
+    m_table->setSummary(QualitySummaryTable::After, summarizeQuality(mesh), stableDt, overlap);
 }
 
 void QualityPanel::clearBefore() {

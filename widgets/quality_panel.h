@@ -71,9 +71,10 @@ public:
     void updateLegend();
 
     /// Histogram series and table column "before" / "after" from a mesh (its quality in the
-    /// reference configuration) and its stable time step (<= 0: not computed, "—").
-    void setBeforeMesh(const TetMesh& mesh, double stableDt);
-    void setAfterMesh(const TetMesh& mesh, double stableDt);
+    /// reference configuration), its stable time step (<= 0: not computed, "—") and how deep it
+    /// overlaps itself (TissueState::overlap; negative: not computed, "—").
+    void setBeforeMesh(const TetMesh& mesh, double stableDt, double overlap = -1);
+    void setAfterMesh(const TetMesh& mesh, double stableDt, double overlap = -1);
     void clearBefore();
     void clearAfter();
     /// The curve of the worst tet over the cuts (QualityCurve::setValues): the worst radius

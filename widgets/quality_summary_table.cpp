@@ -27,7 +27,8 @@ QualitySummaryTable::QualitySummaryTable(QWidget* parent)
     setVerticalHeaderLabels({tr("Nodes"), tr("Edges"), tr("Tets"), tr("Min. radius ratio"),
                              tr("tet_minAR (radius ratio / 3)"), tr("Volume ratio Vmax/Vmin"),
                              tr("Edge ratio lmax/lmin"), tr("Min. dihedral (°)"),
-                             tr("Max. dihedral (°)"), tr("Stable dt (s)")});
+                             tr("Max. dihedral (°)"), tr("Stable dt (s)"),
+                             tr("Overlap (mm)")});
     setEditTriggers(QAbstractItemView::NoEditTriggers);
     setSelectionMode(QAbstractItemView::ContiguousSelection);
     horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
@@ -39,7 +40,7 @@ QualitySummaryTable::QualitySummaryTable(QWidget* parent)
         }
 }
 
-void QualitySummaryTable::setSummary(Column column, const QualitySummary& s, double stableDt) {
+void QualitySummaryTable::setSummary(Column column, const QualitySummary& s, double stableDt, double overlap) {
     auto set = [&](Row row, const QString& text) { item(row, column)->setText(text); };
     set(Nodes, QString::number(s.nodes));
     set(Edges, QString::number(s.edges));
@@ -51,6 +52,7 @@ void QualitySummaryTable::setSummary(Column column, const QualitySummary& s, dou
     set(MinDihedral, number(s.minDihedralDeg));
     set(MaxDihedral, number(s.maxDihedralDeg));
     set(StableTimeStep, std::isfinite(stableDt) && stableDt > 0 ? number(stableDt) : kMissing);
+    set(Overlap, std::isfinite(overlap) && overlap >= 0 ? number(overlap) : kMissing);
 }
 
 void QualitySummaryTable::clearSummary(Column column) {

@@ -2,7 +2,9 @@
 // QualitySummaryTable: the rows of the paper's Table 1 (section 6) for the mesh before and
 // after a cut, side by side: nodes, edges, tets, min radius ratio, the paper's tet_minAR
 // (radius ratio / 3), volume ratio Vmax/Vmin, edge ratio lmax/lmin, min and max dihedral
-// angle (degrees) and the stable explicit time step (core/mesh/stable_time_step.h).
+// angle (degrees) and the stable explicit time step (core/mesh/stable_time_step.h); below
+// them, how deep the mesh overlaps itself (deepestOverlap, core/mesh/validity.h: 0 for a
+// conforming mesh; issue 16's known defect where both walls of a crack stay).
 //
 // Cells hold plain numbers (integers, or QString::number(v, 'g', 6)), "∞" for an infinite
 // ratio and "—" where a column or value is missing (no "after" yet, dt not computed).
@@ -29,14 +31,16 @@ public:
         MinDihedral,
         MaxDihedral,
         StableTimeStep,
+        Overlap,
         RowCount
     };
     enum Column { Before, After, ColumnCount };
 
     explicit QualitySummaryTable(QWidget* parent = nullptr);
 
-    /// Fills a column; `stableDt` <= 0 or non-finite shows "—" (not computed).
-    void setSummary(Column column, const QualitySummary& summary, double stableDt);
+    /// Fills a column; `stableDt` <= 0 or non-finite shows "—" (not computed), and so does a
+    /// negative or non-finite `overlap` (model units).
+    void setSummary(Column column, const QualitySummary& summary, double stableDt, double overlap = -1);
     /// Shows "—" in every row of the column.
     void clearSummary(Column column);
 

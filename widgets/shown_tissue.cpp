@@ -150,11 +150,11 @@ void ShownTissue::updateComparison() {
     const auto before = preview ? current : base;
     const auto after = preview ? preview : (current && current->cuts() > 0 ? current : nullptr);
     if (before)
-        m_quality.setBeforeMesh(before->mesh(), before->stableDt);
+        m_quality.setBeforeMesh(before->mesh(), before->stableDt, before->overlap);
     else
         m_quality.clearBefore();
     if (after)
-        m_quality.setAfterMesh(after->mesh(), after->stableDt);
+        m_quality.setAfterMesh(after->mesh(), after->stableDt, after->overlap);
     else
         m_quality.clearAfter();
     // The worst tet after each of current's cuts, and after the pending one (a preview on

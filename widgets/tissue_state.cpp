@@ -1,6 +1,7 @@
 #include "widgets/tissue_state.h"
 
 #include "core/mesh/stable_time_step.h"
+#include "core/mesh/validity.h"
 
 #include <algorithm>
 #include <atomic>
@@ -93,6 +94,7 @@ void TissueState::settle() {
     const TetMesh& m = tissue.mesh();
     quality = summarizeQuality(m);
     stableDt = tissue.empty() ? 0 : stableTimeStep(m, tissue.material()).dt;
+    overlap = tissue.empty() ? 0 : deepestOverlap(m).depth;
     pieces = tissue.empty() ? 0 : tissue.pieces().count + static_cast<int>(tissue.chips().size());
 }
 

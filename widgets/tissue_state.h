@@ -57,6 +57,10 @@ struct TissueState {
     QString readNote;
     QualitySummary quality;
     double stableDt = 0;         ///< s, stableTimeStep of the mass-spring model
+    /// How deep the tet mesh overlaps itself (deepestOverlap, core/mesh/validity.h; reference
+    /// configuration, model units): 0 unless the improvement pushed one wall of a crack into
+    /// the other (issue 16's known defect).
+    double overlap = 0;
     int pieces = 0;              ///< pieces cut: the tissue's connected components and its resected chips
     CutStats cutStats;           ///< summed over the cuts since base (a preview: the pending cut)
     double surfaceCutMs = 0;     ///< embedded-surface update, cut and re-binding, summed likewise

@@ -99,7 +99,23 @@ private slots:
         QVERIFY(o["stable_dt"].toDouble() > 0);
         QVERIFY(std::abs(o["volume_ratio"].toDouble() - 1.0) < 1e-9);
         QVERIFY(o["validity"].toObject()["valid"].toBool());
+        QCOMPARE(o["overlap"].toDouble(-1), 0.0);
         QCOMPARE(sha256(path("box.vtu")), before);
+    }
+
+    void infoReportsOverlap() {
+        // Two tets sharing no node: a corner of the second lies inside the first, 0.5 from its
+        // nearest face (z = 0; the others are 1 and (4 - 2.5) / sqrt(3) away). The mesh is
+        // valid in every other respect, so only the overlap tells.
+        TetMesh m = TetMesh::fromArrays({Vec3(0, 0, 0), Vec3(4, 0, 0), Vec3(0, 4, 0), Vec3(0, 0, 4),
+                                         Vec3(1, 1, 0.5), Vec3(1, 1, -3), Vec3(3, 1, -3), Vec3(1, 3, -3)},
+                                        {{0, 1, 2, 3}, {4, 6, 5, 7}});
+        QVERIFY(writeVtu(path("overlap.vtu").toStdString(), m).ok());
+        const Run r = runCli({"info", path("overlap.vtu")});
+        QCOMPARE(r.code, 0);
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QVERIFY2(std::abs(o["overlap"].toDouble(-1) - 0.5) < 1e-12, qPrintable(r.out));
+        QCOMPARE(o["pieces"].toInt(), 2);
     }
 
     void infoReportsProblems() {

@@ -23,6 +23,8 @@
 #include <QSlider>
 #include <QTest>
 
+#include <limits>
+
 #include <vtkActor.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -423,6 +425,14 @@ private slots:
         QVERIFY(near(table->value(T::MinDihedral, T::Before), s.minDihedralDeg));
         QVERIFY(near(table->value(T::MaxDihedral, T::Before), s.maxDihedralDeg));
         QVERIFY(near(table->value(T::StableTimeStep, T::Before), 1.5e-4));
+        QCOMPARE(table->value(T::Overlap, T::Before), QStringLiteral("—"));  // not given
+        panel.setBeforeMesh(before, 1.5e-4, 0.0);
+        QCOMPARE(table->value(T::Overlap, T::Before), QStringLiteral("0"));
+        panel.setBeforeMesh(before, 1.5e-4, 0.125);
+        QCOMPARE(table->value(T::Overlap, T::Before), QStringLiteral("0.125"));
+        panel.setBeforeMesh(before, 1.5e-4, std::numeric_limits<double>::quiet_NaN());
+        QCOMPARE(table->value(T::Overlap, T::Before), QStringLiteral("—"));
+        QCOMPARE(table->verticalHeaderItem(T::Overlap)->text(), QStringLiteral("Overlap (mm)"));
 
         panel.setAfterMesh(after, 0.0);
         const QualitySummary a = summarizeQuality(after);

@@ -64,6 +64,7 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include "core/mesh/validity.h"
 #include <QTest>
 
 using namespace resect;
@@ -1106,6 +1107,13 @@ private slots:
         QCOMPARE(s.window.qualityPanel()->summaryTable()->value(QualitySummaryTable::Tets,
                                                                 QualitySummaryTable::After),
                  QString::number(s.window.cutPreview().preview()->mesh().tetCount()));
+        // The overlap row: the preview's, as deepestOverlap measures it (issue 16's defect).
+        QCOMPARE(s.window.qualityPanel()->summaryTable()->value(QualitySummaryTable::Overlap,
+                                                                QualitySummaryTable::After),
+                 QString::number(deepestOverlap(s.window.cutPreview().preview()->mesh()).depth, 'g', 6));
+        QCOMPARE(s.window.qualityPanel()->summaryTable()->value(QualitySummaryTable::Overlap,
+                                                                QualitySummaryTable::Before),
+                 QString::number(deepestOverlap(s.window.session().current()->mesh()).depth, 'g', 6));
 
         s.window.setUnsavedChangesAnswer(QMessageBox::Discard);
         QVERIFY(s.open(target));
