@@ -1795,6 +1795,11 @@
         <source>Stable dt (s)</source>
         <translation>Stabiles dt (s)</translation>
     </message>
+    <message>
+        <location line="+1"/>
+        <source>Overlap (mm)</source>
+        <translation>Überlappung (mm)</translation>
+    </message>
 </context>
 <context>
     <name>resect::ScenarioCommand</name>

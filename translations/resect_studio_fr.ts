@@ -1795,6 +1795,11 @@
         <source>Stable dt (s)</source>
         <translation>dt stable (s)</translation>
     </message>
+    <message>
+        <location line="+1"/>
+        <source>Overlap (mm)</source>
+        <translation>Chevauchement (mm)</translation>
+    </message>
 </context>
 <context>
     <name>resect::ScenarioCommand</name>
