@@ -135,6 +135,64 @@ private slots:
         }
         QCOMPARE(interiorNodes, 1);
     }
+
+    void boundaryFacesAreAllFacesInOneTet_data() {
+        QTest::addColumn<int>("which");
+        QTest::newRow("box") << 0;
+        QTest::newRow("box cut in two, nodes duplicated") << 1;
+        QTest::newRow("a face in three tets, an unused node") << 2;
+        QTest::newRow("flat and repeated-node tets") << 3;
+    }
+    void boundaryFacesAreAllFacesInOneTet() {
+        // boundaryFaces is a faster path to allFaces's faces in one tet: the same faces, with
+        // the same orientation and owner, in the same order.
+        QFETCH(int, which);
+        TetMesh m;
+        if (which == 0) {
+            m = makeBoxTetMesh(Vec3::Zero(), Vec3(3, 2, 1), 4, 3, 2);
+        } else if (which == 1) {
+            // Every tet with its centroid above z = 0.5 gets its own copies of the nodes it
+            // shares with the tets below (a complete cut along the cells' faces).
+            const TetMesh box = makeBoxTetMesh(Vec3::Zero(), Vec3(2, 2, 1), 3, 3, 2);
+            std::vector<Vec3> nodes(box.positions().begin(), box.positions().end());
+            std::vector<Tet> tets(box.tets().begin(), box.tets().end());
+            std::vector<int> copy(nodes.size(), -1);
+            for (Tet& q : tets) {
+                Vec3 c = Vec3::Zero();
+                for (int v : q)
+                    c += nodes[v] / 4;
+                if (c.z() > 0.5)
+                    for (int& v : q)
+                        if (nodes[v].z() == 0.5) {
+                            if (copy[v] < 0) {
+                                copy[v] = static_cast<int>(nodes.size());
+                                nodes.push_back(nodes[v]);
+                            }
+                            v = copy[v];
+                        }
+            }
+            m = TetMesh::fromArrays(std::move(nodes), std::move(tets));
+            QCOMPARE(connectedComponents(m).count, 2);
+        } else if (which == 2) {
+            m = TetMesh::fromArrays({Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0), Vec3(0.5, 0.5, 1),
+                                     Vec3(0.5, 0.5, -1), Vec3(1.5, 0.2, 2), Vec3(9, 9, 9)},
+                                    {{0, 1, 2, 3}, {0, 2, 1, 4}, {0, 1, 2, 5}});
+        } else {
+            m = TetMesh::fromArrays({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(0, 0, 1)},
+                                    {{0, 1, 2, 3}, {0, 1, 2, 4}, {0, 0, 1, 4}});
+        }
+        std::vector<BoundaryFace> expected;
+        for (const MeshFace& f : allFaces(m))
+            if (f.tets[1] < 0)
+                expected.push_back({f.nodes, f.tets[0]});
+        const std::vector<BoundaryFace> got = boundaryFaces(m);
+        QCOMPARE(got.size(), expected.size());
+        QVERIFY(!got.empty());
+        for (std::size_t i = 0; i < got.size(); ++i) {
+            QVERIFY2(got[i].nodes == expected[i].nodes && got[i].tet == expected[i].tet,
+                     qPrintable(QString("face %1").arg(i)));
+        }
+    }
 };
 
 QTEST_GUILESS_MAIN(TestTopology)
