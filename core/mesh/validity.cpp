@@ -169,8 +169,8 @@ MeshOverlap deepestOverlap(const TetMesh& mesh) {
         for (int n : f.nodes)
             onBoundary[n] = 1;
     // A uniform grid (cells about a tet wide) holds the boundary nodes, a few; every tet is
-    // checked against the nodes in the cells its box overlaps. (Holding the tets instead
-    // costs 6-8 times as much: there are far more of them.)
+    // checked against the nodes in the cells its box overlaps (a grid of the tets would need
+    // an entry per tet and cell).
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
     double extent = 0;
     const auto boxOf = [&](int t) {
