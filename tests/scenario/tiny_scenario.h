@@ -17,8 +17,9 @@
 namespace resect::test {
 
 /// Writes box.vtu, box.obj, cut.json and box.json (the scenario) into `dir`; returns the
-/// scenario's path.
-inline QString writeTinyScenario(const QString& dir) {
+/// scenario's path. `duration`: the simulated seconds (a long one keeps an export or a run
+/// busy for seconds, for tests that must act while it runs).
+inline QString writeTinyScenario(const QString& dir, double duration = 0.01) {
     TetMesh mesh = makeBoxTetMesh(Vec3::Zero(), Vec3::Constant(4), 3, 3, 3);
     computeLumpedMasses(mesh, Material{}.density);
     if (!writeVtu((dir + "/box.vtu").toStdString(), mesh).ok())
@@ -34,13 +35,15 @@ inline QString writeTinyScenario(const QString& dir) {
     };
     write("cut.json",
           R"({"curves": [[[-1, -1, 2.3], [-1, 5, 2.3]], [[5, -1, 2.31], [5, 5, 2.31]]]})");
-    write("box.json", R"({"format": "resect-scenario", "version": 1,
+    write("box.json", QString(R"({"format": "resect-scenario", "version": 1,
         "tissues": [{"name": "box", "surface": "box.obj", "mesh": "box.vtu",
                      "fixed_regions": [{"min": [-1, -1, -1], "max": [5, 5, 0.001]}]}],
         "sweeps": [{"name": "cut", "file": "cut.json"}],
         "effects": [{"name": "deformation"}, {"name": "gravity"}, {"name": "fixed"}],
-        "simulation": {"duration": 0.01},
-        "expectations": [{"kind": "pieces_at_least", "value": 2}]})");
+        "simulation": {"duration": %1},
+        "expectations": [{"kind": "pieces_at_least", "value": 2}]})")
+                          .arg(duration, 0, 'g', 17)
+                          .toUtf8());
     return dir + "/box.json";
 }
 

@@ -25,6 +25,12 @@ using namespace resect;
 namespace {
 
 constexpr int kTimeoutMs = 120'000;
+// Simulated seconds for the tests that cancel a running export: the replay takes far longer
+// than the test takes to cancel (checked every 64 steps), so the export is still running when
+// the cancel comes. With the default 0.01 s it could finish first under load, and then
+// rightly report success (seen: progressDialogCancelButtonCancels, about 1 run in 4 under a
+// parallel ctest).
+constexpr double kLongRun = 100;
 
 QStringList entries(const QString& dir) {
     return QDir(dir).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot, QDir::Name);
@@ -78,7 +84,7 @@ private slots:
 
     void cancelRightAfterStartLeavesNoFolder() {
         QTemporaryDir dir;
-        const QString scenario = test::writeTinyScenario(dir.path());
+        const QString scenario = test::writeTinyScenario(dir.path(), kLongRun);
         const QStringList before = entries(dir.path());
         const QString out = dir.filePath("package");
         ExportRunner runner;
@@ -92,10 +98,12 @@ private slots:
         QCOMPARE(runner.summary().failure, ExportFailure::Cancelled);
         QVERIFY(!QFileInfo::exists(out));
         QCOMPARE(entries(dir.path()), before); // no temporary folder either
-        // The runner is reusable afterwards.
-        QVERIFY(runner.start(scenario, out));
+        // The runner is reusable afterwards (on the short scenario: this one runs to the end).
+        QTemporaryDir shortDir;
+        QVERIFY(runner.start(test::writeTinyScenario(shortDir.path()), out));
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kTimeoutMs);
         QVERIFY(finished.takeFirst()[0].toBool());
+        QVERIFY(QFileInfo(out).isDir());
     }
 
     void fileAsOutputIsNamed() {
@@ -116,7 +124,7 @@ private slots:
 
     void progressDialogCancelButtonCancels() {
         QTemporaryDir dir;
-        const QString scenario = test::writeTinyScenario(dir.path());
+        const QString scenario = test::writeTinyScenario(dir.path(), kLongRun);
         const QStringList before = entries(dir.path());
         ExportRunner runner;
         QSignalSpy finished(&runner, &ExportRunner::finished);
@@ -144,7 +152,7 @@ private slots:
 
     void destroyingARunningRunnerCancels() {
         QTemporaryDir dir;
-        const QString scenario = test::writeTinyScenario(dir.path());
+        const QString scenario = test::writeTinyScenario(dir.path(), kLongRun);
         const QStringList before = entries(dir.path());
         {
             ExportRunner runner;
