@@ -44,7 +44,75 @@ std::vector<std::array<int, 2>> uniqueEdges(const TetMesh& mesh) {
     return edges;
 }
 
-std::vector<MeshFace> allFaces(const TetMesh& mesh) {
+namespace {
+
+/// One face of the mesh: the first two of its (tet, local face) ids, t * 4 + local face, in
+/// scan order (tets ascending, then local faces), and how many there are.
+struct FaceRun {
+    int first, second, count;
+};
+
+/// Every face once, in the order a scan of the tets meets them (by first id). Each (tet, local
+/// face) is filed under its face's smallest node (counting sort) and each node's few faces are
+/// sorted by the other two, so that equal faces are neighbours: 5-10 times faster than a hash
+/// map of every face. `onlyInOneTet`: the boundary faces only. False (and nothing) if a node
+/// index is out of range.
+bool faceRuns(const TetMesh& mesh, std::vector<FaceRun>& runs, bool onlyInOneTet = false) {
+    runs.clear();
+    const int tets = mesh.tetCount(), nodes = mesh.nodeCount();
+    for (int t = 0; t < tets; ++t)
+        for (int v : mesh.tet(t))
+            if (v < 0 || v >= nodes)
+                return false;
+    std::vector<int> start(static_cast<std::size_t>(nodes) + 1, 0);
+    for (int t = 0; t < tets; ++t) {
+        const Tet& q = mesh.tet(t);
+        for (const auto& lf : kTetFaces)
+            ++start[static_cast<std::size_t>(std::min({q[lf[0]], q[lf[1]], q[lf[2]]})) + 1];
+    }
+    for (int n = 0; n < nodes; ++n)
+        start[n + 1] += start[n];
+    struct Entry {
+        int b, c, id;  ///< the other two nodes (b <= c), and t * 4 + local face
+    };
+    std::vector<Entry> entries(static_cast<std::size_t>(tets) * 4);
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (int t = 0; t < tets; ++t) {
+        const Tet& q = mesh.tet(t);
+        for (int i = 0; i < 4; ++i) {
+            std::array<int, 3> f{q[kTetFaces[i][0]], q[kTetFaces[i][1]], q[kTetFaces[i][2]]};
+            std::sort(f.begin(), f.end());
+            entries[fill[f[0]]++] = {f[1], f[2], t * 4 + i};
+        }
+    }
+    runs.reserve(entries.size() / 2 + 16);
+    for (int n = 0; n < nodes; ++n) {
+        const auto first = entries.begin() + start[n], last = entries.begin() + start[n + 1];
+        std::sort(first, last, [](const Entry& x, const Entry& y) {
+            return x.b != y.b ? x.b < y.b : x.c != y.c ? x.c < y.c : x.id < y.id;
+        });
+        for (auto it = first; it != last;) {
+            auto end = it + 1;
+            while (end != last && end->b == it->b && end->c == it->c)
+                ++end;
+            if (!onlyInOneTet || end - it == 1)
+                runs.push_back({it->id, end - it > 1 ? (it + 1)->id : -1, static_cast<int>(end - it)});
+            it = end;
+        }
+    }
+    std::sort(runs.begin(), runs.end(), [](const FaceRun& x, const FaceRun& y) { return x.first < y.first; });
+    return true;
+}
+
+/// Local face id % 4 of tet id / 4, oriented as in that tet.
+Tri faceOf(const TetMesh& mesh, int id) {
+    const Tet& q = mesh.tet(id / 4);
+    const auto& lf = kTetFaces[id % 4];
+    return Tri{q[lf[0]], q[lf[1]], q[lf[2]]};
+}
+
+/// allFaces through a hash map of every face: the general path (any node indices).
+std::vector<MeshFace> allFacesHashed(const TetMesh& mesh) {
     std::unordered_map<Tri, int, TriHash> index;
     index.reserve(static_cast<std::size_t>(mesh.tetCount()) * 2 + 16);
     std::vector<MeshFace> faces;
@@ -68,68 +136,31 @@ std::vector<MeshFace> allFaces(const TetMesh& mesh) {
     return faces;
 }
 
+} // namespace
+
+std::vector<MeshFace> allFaces(const TetMesh& mesh) {
+    std::vector<FaceRun> runs;
+    if (!faceRuns(mesh, runs))
+        return allFacesHashed(mesh);
+    std::vector<MeshFace> faces;
+    faces.reserve(runs.size());
+    for (const FaceRun& r : runs)
+        faces.push_back({faceOf(mesh, r.first), {r.first / 4, r.second >= 0 ? r.second / 4 : -1}, std::max(0, r.count - 2)});
+    return faces;
+}
+
 std::vector<BoundaryFace> boundaryFaces(const TetMesh& mesh) {
-    // The faces in exactly one tet, as allFaces finds them (same faces, orientation and
-    // order) but without its hash map of every face, which costs 5-10 times as much: each
-    // face (t, local face) is filed under its smallest node (counting sort), and each node's
-    // few faces are sorted by their other two nodes, so that equal faces are neighbours.
-    const int tets = mesh.tetCount(), nodes = mesh.nodeCount();
-    std::vector<int> start(static_cast<std::size_t>(nodes) + 1, 0);
-    const auto smallest = [&](const Tet& q, const std::array<int, 3>& lf) {
-        return std::min({q[lf[0]], q[lf[1]], q[lf[2]]});
-    };
-    for (int t = 0; t < tets; ++t)
-        for (int v : mesh.tet(t))
-            if (v < 0 || v >= nodes) {
-                // (A node index out of range, which no mesh read or built here has: the
-                // general path.)
-                std::vector<BoundaryFace> result;
-                for (const MeshFace& f : allFaces(mesh))
-                    if (f.tets[1] < 0)
-                        result.push_back({f.nodes, f.tets[0]});
-                return result;
-            }
-    for (int t = 0; t < tets; ++t)
-        for (const auto& lf : kTetFaces)
-            ++start[static_cast<std::size_t>(smallest(mesh.tet(t), lf)) + 1];
-    for (int n = 0; n < nodes; ++n)
-        start[n + 1] += start[n];
-    struct Entry {
-        int b, c, id;  ///< the other two nodes (b <= c), and t * 4 + local face
-    };
-    std::vector<Entry> entries(static_cast<std::size_t>(tets) * 4);
-    std::vector<int> fill(start.begin(), start.end() - 1);
-    for (int t = 0; t < tets; ++t) {
-        const Tet& q = mesh.tet(t);
-        for (int i = 0; i < 4; ++i) {
-            std::array<int, 3> f{q[kTetFaces[i][0]], q[kTetFaces[i][1]], q[kTetFaces[i][2]]};
-            std::sort(f.begin(), f.end());
-            entries[fill[f[0]]++] = {f[1], f[2], t * 4 + i};
-        }
-    }
-    std::vector<int> ids;
-    for (int n = 0; n < nodes; ++n) {
-        const auto first = entries.begin() + start[n], last = entries.begin() + start[n + 1];
-        std::sort(first, last, [](const Entry& x, const Entry& y) {
-            return x.b != y.b ? x.b < y.b : x.c != y.c ? x.c < y.c : x.id < y.id;
-        });
-        for (auto it = first; it != last;) {
-            auto end = it + 1;
-            while (end != last && end->b == it->b && end->c == it->c)
-                ++end;
-            if (end - it == 1)
-                ids.push_back(it->id);
-            it = end;
-        }
-    }
-    std::sort(ids.begin(), ids.end());  // allFaces's order: by tet, then local face
     std::vector<BoundaryFace> result;
-    result.reserve(ids.size());
-    for (int id : ids) {
-        const Tet& q = mesh.tet(id / 4);
-        const auto& lf = kTetFaces[id % 4];
-        result.push_back({Tri{q[lf[0]], q[lf[1]], q[lf[2]]}, id / 4});
+    std::vector<FaceRun> runs;
+    if (!faceRuns(mesh, runs, true)) {
+        for (const MeshFace& f : allFacesHashed(mesh))
+            if (f.tets[1] < 0)
+                result.push_back({f.nodes, f.tets[0]});
+        return result;
     }
+    for (const FaceRun& r : runs)
+        if (r.count == 1)
+            result.push_back({faceOf(mesh, r.first), r.first / 4});
     return result;
 }
 
