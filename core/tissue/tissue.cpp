@@ -418,6 +418,11 @@ std::vector<int> Tissue::improve(TissueCut& result, const std::vector<int>& seed
     m_surface.followRemesh(*m_mesh, record, r.renumbering);
     if (r.renumbered()) {
         renumberLocally(r);
+        // The tets around moved nodes may now reach beyond the cells they are registered in
+        // (renumberLocally registers the tets that changed index or were created).
+        for (int n : r.movedNodes)
+            for (int t : m_mesh->nodeTets(n))
+                m_cutter->grid().insert(*m_mesh, t);
         for (int n : r.addedOnCutSurface)
             m_onCut[n] = 1;
         // The simulation is rebuilt (its effects hold per-tet and per-edge arrays that do not

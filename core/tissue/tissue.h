@@ -104,6 +104,9 @@ public:
 
     bool empty() const { return !m_mesh || m_mesh->empty(); }
     const TetMesh& mesh() const { return *m_mesh; }
+    /// The spatial index cuts find their tets in (current positions; up to date after a cut,
+    /// and rebuilt before the next one where the simulation moved the tets).
+    const TetGrid& spatialIndex() const { return m_cutter->grid(); }
     /// The embedded surface; its positions are those of the last updateSurface() (or cut).
     const EmbeddedSurface& surface() const { return m_surface; }
     const Material& material() const { return m_material; }

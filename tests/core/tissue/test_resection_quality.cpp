@@ -9,6 +9,7 @@
 //  - is valid (no inverted or degenerate tet, conforming faces, no unused node) and positively
 //    oriented where it is;
 //  - keeps its anchors;
+//  - is found by the spatial index the next cut searches (every tet at each of its corners);
 //  - does not overlap itself (scoops on the polyp and the box; measured on the others).
 #include "core/mesh/masses.h"
 #include "core/mesh/body_surface.h"
@@ -238,6 +239,15 @@ private:
                 QVERIFY(orient3d(m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3])) > 0);
                 QVERIFY(orient3d(m.pos(q[0]), m.pos(q[1]), m.pos(q[2]), m.pos(q[3])) > 0);
             }
+            // The spatial index the next cut searches finds every tet at each of its corners:
+            // the tets around nodes the improvement moved are registered where they now reach.
+            std::vector<int> found;
+            for (int t = 0; t < m.tetCount(); ++t)
+                for (int n : m.tet(t)) {
+                    tissue.spatialIndex().query(Eigen::AlignedBox3d(m.pos(n), m.pos(n)), found);
+                    QVERIFY2(std::find(found.begin(), found.end(), t) != found.end(),
+                             qPrintable(at + QString(": the spatial index misses tet %1 at node %2").arg(t).arg(n)));
+                }
             // No node leaves the body's surface or the cut surfaces (the sweeps) by more than the
             // improvement's bounded deviation (ImproveOptions::maxDeviation local boundary edges
             // per pass) allows; in practice far less.
