@@ -158,9 +158,9 @@ std::vector<BoundaryFace> boundaryFaces(const TetMesh& mesh) {
                 result.push_back({f.nodes, f.tets[0]});
         return result;
     }
-    for (const FaceRun& r : runs)
-        if (r.count == 1)
-            result.push_back({faceOf(mesh, r.first), r.first / 4});
+    result.reserve(runs.size());
+    for (const FaceRun& r : runs)  // (only faces in one tet: faceRuns's onlyInOneTet)
+        result.push_back({faceOf(mesh, r.first), r.first / 4});
     return result;
 }
 

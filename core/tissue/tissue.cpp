@@ -416,13 +416,13 @@ std::vector<int> Tissue::improve(TissueCut& result, const std::vector<int>& seed
     std::sort(bad.begin(), bad.end());
     bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
     m_surface.followRemesh(*m_mesh, record, r.renumbering);
+    if (r.renumbered())
+        renumberLocally(r);  // (registers in the index the tets that changed index or were created)
+    // The tets around moved nodes may now reach beyond the cells they are registered in.
+    for (int n : r.movedNodes)
+        for (int t : m_mesh->nodeTets(n))
+            m_cutter->grid().insert(*m_mesh, t);
     if (r.renumbered()) {
-        renumberLocally(r);
-        // The tets around moved nodes may now reach beyond the cells they are registered in
-        // (renumberLocally registers the tets that changed index or were created).
-        for (int n : r.movedNodes)
-            for (int t : m_mesh->nodeTets(n))
-                m_cutter->grid().insert(*m_mesh, t);
         for (int n : r.addedOnCutSurface)
             m_onCut[n] = 1;
         // The simulation is rebuilt (its effects hold per-tet and per-edge arrays that do not
@@ -430,10 +430,7 @@ std::vector<int> Tissue::improve(TissueCut& result, const std::vector<int>& seed
         rebuild = true;
         return bad;
     }
-    // Only nodes moved: the index, the simulation and the change list follow locally.
-    for (int n : r.movedNodes)
-        for (int t : m_mesh->nodeTets(n))
-            m_cutter->grid().insert(*m_mesh, t);
+    // Only nodes moved: the simulation and the change list follow locally.
     if (m_sim && !rebuild) {
         CutChanges moved;
         moved.firstNewNode = m_mesh->nodeCount();
