@@ -4,12 +4,14 @@
 #include "core/mesh/body_surface.h"
 #include "core/mesh/predicates.h"
 #include "core/mesh/quality.h"
+#include "core/mesh/tet_grid.h"
 #include "core/mesh/topology.h"
 
 #include <Eigen/Cholesky>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <unordered_map>
@@ -100,6 +102,11 @@ constexpr double kBodyTolerance = 1e-9;
 // cut marks it): placements on the old boundary that keep the volume exactly can land off a
 // plane by about kBodyTolerance near the body's sharp edges, and such a node stays held.
 constexpr double kOnBodyTolerance = 1e-6;
+
+/// Signed volume of a tet by its nodes (reference positions).
+double tetVolume(const TetMesh& m, const Tet& q) {
+    return (m.ref(q[1]) - m.ref(q[0])).dot((m.ref(q[2]) - m.ref(q[0])).cross(m.ref(q[3]) - m.ref(q[0]))) / 6.0;
+}
 
 /// The tet q with node v placed at p (reference positions otherwise).
 std::array<Vec3, 4> cornersWith(const TetMesh& m, const Tet& q, int v, const Vec3& p, bool current) {
@@ -221,6 +228,31 @@ private:
 
 struct Face {
     Tri nodes;  ///< outward
+    bool crack = false;  ///< a glued crack face (Pass::glue), not the mesh boundary
+};
+
+/// An unoriented triangle, by its sorted nodes.
+struct TriKey {
+    int a, b, c;
+    static TriKey of(int x, int y, int z) {
+        if (x > y)
+            std::swap(x, y);
+        if (y > z)
+            std::swap(y, z);
+        if (x > y)
+            std::swap(x, y);
+        return {x, y, z};
+    }
+    static TriKey of(const Tri& t) { return of(t[0], t[1], t[2]); }
+    bool operator==(const TriKey&) const = default;
+};
+struct TriKeyHash {
+    std::size_t operator()(const TriKey& k) const {
+        std::uint64_t h = static_cast<std::uint32_t>(k.a);
+        h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.b);
+        h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.c);
+        return static_cast<std::size_t>(h ^ (h >> 29));
+    }
 };
 
 class Pass {
@@ -234,16 +266,17 @@ public:
     }
 
     void run() {
+        if (o.glueCracks)
+            glue();
         r.worstBefore = worstInRegion();
-        for (int sweep = 0; sweep < o.sweeps; ++sweep) {
-            const int before = r.collapses + r.smoothed + r.flips + r.splits;
-            collapseSweep();
-            flipSweep();
-            smoothSweep();
-            if (o.split)
-                splitSweep();
-            if (r.collapses + r.smoothed + r.flips + r.splits == before)
-                break;
+        sweeps();
+        if (!crack.empty() || !spares.empty())
+            unglue();
+        // Where the glued walls could not be made good enough (tissue between two walls thinner
+        // than the elements, a flap), the sweeps again with the walls on their own.
+        if (r.gluedNodes > 0 && weak()) {
+            ++r.ungluedPasses;
+            sweeps();
         }
         r.worstAfter = worstInRegion();
         finish();
@@ -263,8 +296,77 @@ private:
     mutable std::unordered_map<int, double> ratioOf;  ///< tetRatio() of tets not changed since
     int startNodes;                              ///< node count at the start (added nodes come after)
     std::unordered_map<int, bool> cutMarkOf;     ///< onCut() of merged and added nodes
+    /// Glued cracks (glue()): the crack faces, by their nodes as they are now, and the copies
+    /// glued into each node (out of every tet until unglue() gives them a side again).
+    std::unordered_set<TriKey, TriKeyHash> crack;
+    std::unordered_map<int, std::vector<int>> spares;
 
     bool alive(int n) const { return !mergedInto.count(n); }
+    /// Whether a glued crack node moved from `from` to `to` drifts from the cuts: farther from
+    /// their sweeps than ImproveOptions::maxCrackDrift and than it was.
+    bool drifts(const Vec3& from, const Vec3& to) const {
+        if (!o.cutDistance || crack.empty())
+            return false;
+        return o.cutDistance(to) > std::max(o.maxCrackDrift, o.cutDistance(from)) * (1 + 1e-12);
+    }
+    /// The number of sectors of the star `tets` of x: tets joined across faces at x that are not
+    /// crack faces (isCrack with from/to: the tets after a collapse of `from` into `to`).
+    int sectorsOf(const std::vector<Tet>& tets, int x, int from = -1, int to = -1) const {
+        std::vector<int> parent(tets.size());
+        std::iota(parent.begin(), parent.end(), 0);
+        const auto root = [&](int i) {
+            while (parent[i] != i)
+                i = parent[i] = parent[parent[i]];
+            return i;
+        };
+        std::unordered_map<std::uint64_t, int> firstWith;
+        for (int i = 0; i < static_cast<int>(tets.size()); ++i) {
+            const Tet& q = tets[i];
+            for (const auto& lf : kTetFaces) {
+                const Tri f{q[lf[0]], q[lf[1]], q[lf[2]]};
+                const int k = f[0] == x ? 0 : f[1] == x ? 1 : f[2] == x ? 2 : -1;
+                if (k < 0 || isCrack(f, from, to))
+                    continue;
+                const auto [it, inserted] = firstWith.emplace(linkEdge(f[(k + 1) % 3], f[(k + 2) % 3]), i);
+                if (!inserted)
+                    parent[root(i)] = root(it->second);
+            }
+        }
+        int count = 0;
+        for (int i = 0; i < static_cast<int>(tets.size()); ++i)
+            count += root(i) == i;
+        return count;
+    }
+    int sectorCount(int x) const { return sectorsOf(starOf(x), x); }
+    /// Per tet of `tets` (around nodes a and b), its side of the glued crack: tets joined across
+    /// faces that are not crack faces; the label of the first tet's side is 0, the others 1
+    /// (the sides are found across every face, not only those at a node).
+    std::vector<int> sidesOf(const std::vector<Tet>& tets, int& count) const {
+        std::vector<int> parent(tets.size());
+        std::iota(parent.begin(), parent.end(), 0);
+        const auto root = [&](int i) {
+            while (parent[i] != i)
+                i = parent[i] = parent[parent[i]];
+            return i;
+        };
+        std::unordered_map<TriKey, int, TriKeyHash> firstWith;
+        for (int i = 0; i < static_cast<int>(tets.size()); ++i)
+            for (const auto& lf : kTetFaces) {
+                const Tri f{tets[i][lf[0]], tets[i][lf[1]], tets[i][lf[2]]};
+                if (isCrack(f))
+                    continue;
+                const auto [it, inserted] = firstWith.emplace(TriKey::of(f), i);
+                if (!inserted)
+                    parent[root(i)] = root(it->second);
+            }
+        count = 0;
+        std::vector<int> side(tets.size());
+        for (int i = 0; i < static_cast<int>(tets.size()); ++i) {
+            count += root(i) == i;
+            side[i] = root(i) == root(0) ? 0 : 1;
+        }
+        return side;
+    }
 
     bool keptOut(const Vec3& p) const {
         if (!o.keepOut)
@@ -306,6 +408,35 @@ private:
         return s.distance > s.slack + eps || (pure && s.distance < -s.slack - eps);
     }
 
+    /// Collapses, flips, smoothing and splits over the region, until a sweep changes nothing.
+    void sweeps() {
+        for (int sweep = 0; sweep < o.sweeps; ++sweep) {
+            const int before = r.collapses + r.smoothed + r.flips + r.splits;
+            collapseSweep();
+            flipSweep();
+            smoothSweep();
+            if (o.split)
+                splitSweep();
+            if (r.collapses + r.smoothed + r.flips + r.splits == before)
+                break;
+        }
+    }
+
+    /// Whether a tet of the region is below ImproveOptions::weakRatio or an edge below weakEdge.
+    bool weak() const {
+        for (int n : nodes)
+            if (alive(n))
+                for (int t : m.nodeTets(n)) {
+                    if (tetRatio(t) < o.weakRatio)
+                        return true;
+                    const Tet& q = m.tet(t);
+                    for (const auto& e : kTetEdges)
+                        if ((m.ref(q[e[0]]) - m.ref(q[e[1]])).norm() < o.weakEdge)
+                            return true;
+                }
+        return false;
+    }
+
     double worstInRegion() const {
         double worst = 1;
         for (int n : nodes)
@@ -327,9 +458,30 @@ private:
     }
     void forget(int t) { ratioOf.erase(t); }
 
+    /// Whether face f is a glued crack face; with from >= 0, also where f names node `to` for
+    /// node `from` (the tets after a collapse of `from` into `to`).
+    bool isCrack(const Tri& f, int from = -1, int to = -1) const {
+        if (crack.empty())
+            return false;
+        if (crack.count(TriKey::of(f)))
+            return true;
+        if (from < 0)
+            return false;
+        Tri g = f;
+        bool renamed = false;
+        for (int& v : g)
+            if (v == to) {
+                v = from;
+                renamed = true;
+            }
+        return renamed && crack.count(TriKey::of(g));
+    }
+
     /// Faces of the given tets that contain node x and occur once among them (the boundary of
-    /// x's star when `tets` are all of x's tets), oriented outward.
-    static std::vector<Face> boundaryFacesAt(const std::vector<Tet>& tets, int x) {
+    /// x's star when `tets` are all of x's tets), oriented outward, and the glued crack faces
+    /// at x (twice among them: once, as one of the tets has it; `crack` set). With from >= 0
+    /// the tets are those after a collapse of `from` into `to` (isCrack).
+    std::vector<Face> boundaryFacesAt(const std::vector<Tet>& tets, int x, int from = -1, int to = -1) const {
         // Every face here contains x, so its other two nodes (u < v) identify it: faces are
         // matched on one 64-bit key. The few that occur once are then put in the order of their
         // sorted node triples (what callers iterate in; sums over them depend on the order).
@@ -357,6 +509,8 @@ private:
                 ++j;
             if (j == i + 1)
                 faces.push_back({all[i].face});
+            else if (j == i + 2 && isCrack(all[i].face, from, to))
+                faces.push_back({all[i].face, true});
             i = j;
         }
         const auto sorted = [](const Face& f) {
@@ -366,6 +520,9 @@ private:
         };
         std::sort(faces.begin(), faces.end(), [&](const Face& p, const Face& q) { return sorted(p) < sorted(q); });
         return faces;
+    }
+    static bool anyOuter(const std::vector<Face>& faces) {
+        return std::any_of(faces.begin(), faces.end(), [](const Face& f) { return !f.crack; });
     }
 
     std::vector<Tet> starOf(int x) const {
@@ -392,6 +549,20 @@ private:
         const auto at = [&](int n) -> const Vec3& { return n == x ? px : m.ref(n); };
         for (const Face& f : faces)
             best = std::min(best, pointTriangleDistance(p, at(f.nodes[0]), at(f.nodes[1]), at(f.nodes[2])));
+        return best;
+    }
+
+    /// The point of the triangles `faces` (reference positions) nearest to p.
+    Vec3 nearestOn(const std::vector<Face>& faces, const Vec3& p) const {
+        Vec3 best = p;
+        double bestDistance = std::numeric_limits<double>::infinity();
+        for (const Face& f : faces) {
+            const Vec3 c = closestPointOnTriangle(p, m.ref(f.nodes[0]), m.ref(f.nodes[1]), m.ref(f.nodes[2]));
+            if (const double d = (c - p).squaredNorm(); d < bestDistance) {
+                bestDistance = d;
+                best = c;
+            }
+        }
         return best;
     }
 
@@ -501,6 +672,65 @@ private:
         return commonEdges == lab.edges;
     }
 
+    /// Whether the glued crack through node x ends inside the tissue somewhere (a border edge of
+    /// its crack faces, reached across crack edges, that lies on no boundary face: a front).
+    /// Such a crack does not separate its two sides, so joining its walls at a node cannot
+    /// join two pieces; a crack without one may separate them (or run on beyond the region).
+    bool crackHasFront(int x) const {
+        const auto facesAt = [&](int y) {
+            std::vector<TriKey> out;
+            for (int t : m.nodeTets(y)) {
+                const Tet& q = m.tet(t);
+                for (const auto& lf : kTetFaces) {
+                    const Tri f{q[lf[0]], q[lf[1]], q[lf[2]]};
+                    if (std::find(f.begin(), f.end(), y) == f.end())
+                        continue;
+                    const TriKey k = TriKey::of(f);
+                    if (crack.count(k) && std::find(out.begin(), out.end(), k) == out.end())
+                        out.push_back(k);
+                }
+            }
+            return out;
+        };
+        std::vector<TriKey> queue = facesAt(x);
+        std::unordered_set<TriKey, TriKeyHash> seen(queue.begin(), queue.end());
+        std::vector<int> tets;
+        for (std::size_t i = 0; i < queue.size() && i < 20000; ++i) {
+            const TriKey k = queue[i];
+            const int v[3] = {k.a, k.b, k.c};
+            for (int e = 0; e < 3; ++e) {
+                const int p = v[e], q = v[(e + 1) % 3];
+                int across = 0;
+                for (const TriKey& g : facesAt(p)) {
+                    if (!(g.a == q || g.b == q || g.c == q) || g == k)
+                        continue;
+                    ++across;
+                    if (seen.insert(g).second)
+                        queue.push_back(g);
+                }
+                if (across > 0)
+                    continue;
+                // A border edge: a front where no boundary face holds it.
+                m.edgeTets(p, q, tets);
+                bool onBoundary = false;
+                std::vector<int> ft;
+                for (int t : tets) {
+                    const Tet& qq = m.tet(t);
+                    for (int r : qq) {
+                        if (r == p || r == q)
+                            continue;
+                        m.faceTets(p, q, r, ft);
+                        if (ft.size() == 1)
+                            onBoundary = true;
+                    }
+                }
+                if (!onBoundary)
+                    return true;
+            }
+        }
+        return false;
+    }
+
     // --- edge collapse ---
 
     /// The point of the triangles `faces` (reference positions) nearest to p0 where
@@ -584,6 +814,23 @@ private:
                         v = a;
                 after.push_back(q);
             }
+        // The sides of a glued crack through the stars: the placement keeps the volume of each
+        // (else the crack would move tissue from one side to the other). Tets of `after` keep
+        // the side of the tet they come from (`before` holds tetsA, then tetsB outside the
+        // shell, in the order `after` takes them).
+        int sideCount = 1;
+        std::vector<int> afterSide;
+        double sideBefore = 0;
+        if (!crack.empty()) {
+            const std::vector<int> side = sidesOf(before, sideCount);
+            for (std::size_t i = 0; i < before.size(); ++i) {
+                if (side[i] == 0)
+                    sideBefore += tetVolume(m, before[i]);
+                const bool inShell = i < tetsA.size() && std::find(shell.begin(), shell.end(), tetsA[i]) != shell.end();
+                if (!inShell)
+                    afterSide.push_back(side[i]);
+            }
+        }
         // Old boundary around a and b (for the deviation checks).
         std::vector<Face> oldBoundary = boundaryFacesAt(before, a);
         const bool boundaryA = !oldBoundary.empty();
@@ -591,6 +838,17 @@ private:
         const bool boundaryB = !facesB.empty();
         oldBoundary.insert(oldBoundary.end(), facesB.begin(), facesB.end());
         const bool boundary = boundaryA || boundaryB;
+        // A glued crack's end nearer to the cuts: the merged node goes no farther from them.
+        std::optional<Vec3> crackEnd;
+        for (const Face& f : oldBoundary)
+            if (f.crack && o.cutDistance)
+                for (int x : {a, b})
+                    if (std::find(f.nodes.begin(), f.nodes.end(), x) != f.nodes.end() &&
+                        (!crackEnd || o.cutDistance(m.ref(x)) < o.cutDistance(*crackEnd)))
+                        crackEnd = m.ref(x);
+        // Only on the mesh's boundary does the merged node's place change the volume (around
+        // a glued crack the tets on both sides fill the same space wherever it goes).
+        const bool outer = anyOuter(oldBoundary);
         const double edgeScale = meanEdgeOf(oldBoundary);
         const double tolerance = o.maxDeviation * edgeScale;
         std::vector<int> boundaryEnds;
@@ -633,7 +891,46 @@ private:
             Vec3 p = p0;
             const double scale = std::abs(volumeBefore) + 1e-300;
             bool offSurface = false;
-            if (boundary && std::abs(volumeBefore - volume) > 1e-15 * scale) {
+            // The volume of side 0 of a glued crack, with a at x, and its gradient.
+            const auto sideVolume = [&](const Vec3& x, Vec3* grad) {
+                double v = 0;
+                Vec3 g = Vec3::Zero();
+                for (std::size_t i = 0; i < after.size(); ++i)
+                    if (afterSide[i] == 0) {
+                        Vec3 gi;
+                        v += volumeAndGradient(m, after[i], a, x, gi);
+                        g += gi;
+                    }
+                if (grad)
+                    *grad = g;
+                return v;
+            };
+            if (sideCount > 2)
+                continue;  // three sides or more (cracks meeting): no placement keeps them all
+            if (sideCount == 2 && outer) {
+                // A rim (the crack meets the body's surface): the body's volume and each
+                // side's, both affine in the position: the nearest point to p0 keeping both.
+                Vec3 gs;
+                const double v = sideVolume(p0, &gs);
+                const double r1 = volumeBefore - volume, r2 = sideBefore - v;
+                const double a11 = gradient.dot(gradient), a12 = gradient.dot(gs), a22 = gs.dot(gs);
+                const double det = a11 * a22 - a12 * a12;
+                if (!(det > 1e-12 * a11 * a22))
+                    continue;
+                const double l1 = (a22 * r1 - a12 * r2) / det, l2 = (a11 * r2 - a12 * r1) / det;
+                p = p0 + l1 * gradient + l2 * gs;
+                offSurface = true;  // (within maxDeviation of the old boundary: checked below)
+            } else if (sideCount == 2 && !outer) {
+                Vec3 g;
+                const double v = sideVolume(p0, &g);
+                if (std::abs(sideBefore - v) > 1e-15 * scale) {
+                    const std::optional<Vec3> q = onBoundaryWithVolume(oldBoundary, g, p0, sideBefore - v);
+                    if (!q)
+                        continue;
+                    p = *q;
+                }
+            }
+            if (outer && sideCount != 2 && std::abs(volumeBefore - volume) > 1e-15 * scale) {
                 const std::optional<Vec3> q = onBoundaryWithVolume(oldBoundary, gradient, p0, volumeBefore - volume);
                 if (q) {
                     p = *q;
@@ -647,6 +944,10 @@ private:
                 }
             }
             if (!p.allFinite() || keptOut(p) || (boundary && leavesBody(p0, p, pure, edgeScale)))
+                continue;
+            if (sideCount == 2 && std::abs(sideVolume(p, nullptr) - sideBefore) > 1e-12 * scale)
+                continue;
+            if (crackEnd && drifts(*crackEnd, p))
                 continue;
             if (o.maxEdge > 0 && !isShort) {
                 // Coarsening stops where edges would grow too long.
@@ -671,7 +972,7 @@ private:
                 continue;
             if (boundary) {
                 // The nodes that were on the boundary stay near the new one.
-                const std::vector<Face> newBoundary = boundaryFacesAt(after, a);
+                const std::vector<Face> newBoundary = boundaryFacesAt(after, a, b, a);
                 if ((offSurface && distanceTo(p, oldBoundary, -2, Vec3::Zero()) > tolerance) || (boundaryA && distanceTo(pa, newBoundary, a, p) > tolerance) ||
                     (boundaryB && distanceTo(pb, newBoundary, a, p) > tolerance))
                     continue;
@@ -696,7 +997,31 @@ private:
             // The merged node smoothed among the tets that remain, from the best placement.
             const Vec3 keepRef = m.ref(a), keepPos = m.pos(a);
             m.setNodePosition(a, best.ref, best.pos);
+            // (b's crack faces as a's for the while: the merged node's sides are those of
+            // `after`, else smoothing would take a crack node for an inner one and bend it.)
+            std::vector<std::pair<TriKey, TriKey>> renamed;
+            if (!crack.empty()) {
+                for (int t : tetsB)
+                    for (const auto& lf : kTetFaces) {
+                        const Tet& q = m.tet(t);
+                        const Tri f{q[lf[0]], q[lf[1]], q[lf[2]]};
+                        if (std::find(f.begin(), f.end(), b) == f.end() || std::find(f.begin(), f.end(), a) != f.end() ||
+                            !crack.count(TriKey::of(f)))
+                            continue;
+                        const TriKey to = TriKey::of(f[0] == b ? a : f[0], f[1] == b ? a : f[1], f[2] == b ? a : f[2]);
+                        if (std::none_of(renamed.begin(), renamed.end(), [&](const auto& r) { return r.first == TriKey::of(f); }))
+                            renamed.emplace_back(TriKey::of(f), to);
+                    }
+                for (const auto& [from, to] : renamed) {
+                    crack.erase(from);
+                    crack.insert(to);
+                }
+            }
             const std::optional<Vec3> x = bestPosition(a, after, best.worst);
+            for (const auto& [from, to] : renamed) {
+                crack.erase(to);
+                crack.insert(from);
+            }
             m.setNodePosition(a, keepRef, keepPos);
             if (x) {
                 Placement cand;
@@ -705,7 +1030,7 @@ private:
                 mapToCurrent(before, *x, cand.pos, cand.vel);
                 bool ok = acceptable(cand.worst) && allPositive(after, a, *x) && allPositive(after, a, cand.pos, true);
                 if (ok && boundary) {
-                    const std::vector<Face> newBoundary = boundaryFacesAt(after, a);
+                    const std::vector<Face> newBoundary = boundaryFacesAt(after, a, b, a);
                     ok = !(boundaryA && distanceTo(pa, newBoundary, a, *x) > tolerance) &&
                          !(boundaryB && distanceTo(pb, newBoundary, a, *x) > tolerance);
                 }
@@ -718,6 +1043,16 @@ private:
         // The link condition last: it holds for most edges, and most placements are refused.
         if (!accept || !linkCondition(a, b))
             return false;
+        // A glued crack keeps separating what it separated: the merged node has as many sides
+        // as the more of its ends had, except on a crack that ends inside the tissue somewhere
+        // (crackHasFront). There the walls may meet at the node (the crack's border moves to
+        // it), which cannot join two pieces; a crack without a front may be all that separates
+        // them.
+        if (!crack.empty() && (boundaryA || boundaryB)) {
+            const int sa = sectorCount(a), sb = sectorCount(b);
+            if (sectorsOf(after, a, b, a) < std::max(sa, sb) && !crackHasFront(a) && !crackHasFront(b))
+                return false;
+        }
         applyCollapse(a, b, shell, tetsB, best);
         return true;
     }
@@ -731,6 +1066,25 @@ private:
     }
 
     void applyCollapse(int a, int b, std::vector<int> shell, const std::vector<int>& tetsB, const Placement& at) {
+        if (!crack.empty()) {
+            // b's crack faces become a's; those with both vanish with the shell.
+            std::vector<TriKey> renamed;
+            for (int t : tetsB)
+                for (const auto& lf : kTetFaces) {
+                    const Tet& q = m.tet(t);
+                    const Tri f{q[lf[0]], q[lf[1]], q[lf[2]]};
+                    if (std::find(f.begin(), f.end(), b) == f.end() || !crack.erase(TriKey::of(f)))
+                        continue;
+                    if (std::find(f.begin(), f.end(), a) == f.end())
+                        renamed.push_back(TriKey::of(f[0] == b ? a : f[0], f[1] == b ? a : f[1], f[2] == b ? a : f[2]));
+                }
+            crack.insert(renamed.begin(), renamed.end());
+        }
+        if (const auto it = spares.find(b); it != spares.end()) {
+            std::vector<int> moving = std::move(it->second);
+            spares.erase(it);
+            spares[a].insert(spares[a].end(), moving.begin(), moving.end());
+        }
         for (int t : tetsB)
             if (std::find(shell.begin(), shell.end(), t) == shell.end()) {
                 Tet q = m.tet(t);
@@ -872,7 +1226,7 @@ private:
                 break;
             }
         }
-        if (t2 < 0 || e < 0 || !flippableTet(m.tet(t2)))
+        if (t2 < 0 || e < 0 || !flippableTet(m.tet(t2)) || isCrack({a, b, c}))
             return false;
         // The new edge d-e must not exist already.
         for (int u : m.nodeTets(d)) {
@@ -913,6 +1267,8 @@ private:
             for (int v : m.tet(u))
                 if (v != p && v != q)
                     pr[k++] = v;
+            if (isCrack({p, q, pr[0]}) || isCrack({p, q, pr[1]}))
+                return false;  // an edge of a glued crack: removing it would remove the crack's faces
             pairs.push_back(pr);
         }
         std::vector<int> polygon{pairs[0][0], pairs[0][1]};
@@ -1074,6 +1430,9 @@ private:
             for (int u : ring) {
                 inRegion = inRegion && flippableTet(m.tet(u));
                 worstBefore = std::min(worstBefore, tetRatio(u));
+                for (int v : m.tet(u))
+                    if (v != a && v != b && isCrack({a, b, v}))
+                        inRegion = false;  // an edge of a glued crack stays whole
             }
             if (!inRegion)
                 continue;
@@ -1182,6 +1541,7 @@ private:
         // On the boundary, the volume gradient's direction (set below): ascents go across it.
         bool boundary = false;
         Vec3 normal = Vec3::Zero();
+        Vec3 rimLine = Vec3::Zero();  // a rim node's line of motion (below), else zero
         // (`known`: the star's worst ratio at p if known, else negative.)
         const auto score = [&](const Vec3& p, Vec3* ascent, double known = -1) {
             int wi = 0;
@@ -1221,7 +1581,9 @@ private:
                             e[k] = h;
                             g[k] = ratioWith(m, star[i], v, p + e) - ratioWith(m, star[i], v, p - e);
                         }
-                        if (boundary)
+                        if (rimLine.norm() > 0)
+                            g = g.dot(rimLine) * rimLine;
+                        else if (boundary)
                             g -= g.dot(normal) * normal;
                         gradients.push_back(g);
                     }
@@ -1239,13 +1601,31 @@ private:
             return std::nullopt;
         const std::vector<Face> faces = boundaryFacesAt(star, v);
         boundary = !faces.empty();
-        Vec3 gradient = Vec3::Zero();  // of the volume of the star, in the node's position
+        // On a glued crack a node slides along it keeping the volume of each side (the volume
+        // gradient of one side's tets).
+        int sides = 1;
+        std::vector<int> side;
+        bool rim = false;
+        const bool onCrack = std::any_of(faces.begin(), faces.end(), [](const Face& f) { return f.crack; });
+        if (onCrack) {
+            side = sidesOf(star, sides);
+            // A front (one side: the crack ends at the node) moves as any boundary node, within
+            // the crack's old faces and the body's surface. A rim (two sides, and on the body's
+            // surface too) keeps both volumes (below). Where cracks meet (three sides or more)
+            // the node stays.
+            rim = sides == 2 && anyOuter(faces);
+            if (sides > 2)
+                return std::nullopt;
+        }
+        Vec3 gradient = Vec3::Zero();  // of the volume of the star (one side's), in the node's position
         double tolerance = 0, edgeScale = 0;
         bool pure = false;
         if (boundary) {
-            for (const Tet& q : star) {
+            for (std::size_t i = 0; i < star.size(); ++i) {
+                if (sides == 2 && side[i] != 0)
+                    continue;
                 Vec3 g;
-                volumeAndGradient(m, q, v, x0, g);
+                volumeAndGradient(m, star[i], v, x0, g);
                 gradient += g;
             }
             if (!(gradient.norm() > 0))
@@ -1256,6 +1636,22 @@ private:
         }
         if (boundary)
             normal = gradient.normalized();
+        // A rim node (crack and body's surface) keeps the body's volume and each side's: it
+        // moves only along the line where both are what they are (both are affine in its place).
+        if (rim) {
+            if (sides != 2)
+                return std::nullopt;
+            Vec3 total = Vec3::Zero();
+            for (const Tet& q : star) {
+                Vec3 g;
+                volumeAndGradient(m, q, v, x0, g);
+                total += g;
+            }
+            rimLine = total.cross(gradient);
+            if (!(rimLine.norm() > 1e-6 * total.norm() * gradient.norm()))
+                return std::nullopt;
+            rimLine.normalize();
+        }
         double shortest = std::numeric_limits<double>::infinity();
         for (const Tet& q : star)
             for (const auto& e : kTetEdges)
@@ -1265,7 +1661,11 @@ private:
         // stays on the body's surface or the cut surface; the volume is kept).
         const auto place = [&](const Vec3& p) -> std::optional<Vec3> {
             std::optional<Vec3> at = p;
-            if (boundary) {
+            if (rim) {
+                at = x0 + rimLine.dot(p - x0) * rimLine;
+                if (!o.offSurface || distanceTo(*at, faces, v, x0) > tolerance)
+                    return std::nullopt;
+            } else if (boundary) {
                 // (p is across the volume gradient from x0: it keeps the volume too, a little
                 // off the boundary where it is curved.)
                 at = onBoundaryWithVolume(faces, gradient, p, gradient.dot(x0 - p));
@@ -1273,7 +1673,7 @@ private:
                     at = p;
             }
             if (!at || keptOut(*at) || (boundary && leavesBody(x0, *at, pure, edgeScale)) ||
-                !allPositive(star, v, *at))
+                !allPositive(star, v, *at) || (onCrack && drifts(x0, *at)))
                 return std::nullopt;
             if (boundary && distanceTo(x0, faces, v, *at) > tolerance)
                 return std::nullopt;
@@ -1302,7 +1702,9 @@ private:
             worst = score(x, &d);
             if (worst >= 1)
                 break;
-            if (boundary)
+            if (rim)
+                d = d.dot(rimLine) * rimLine;
+            else if (boundary)
                 d -= d.dot(normal) * normal;
             const double norm = d.norm();
             if (!(norm > 0))
@@ -1330,8 +1732,271 @@ private:
 
     void smoothSweep() {
         for (int n : nodes)
-            if (alive(n))
+            if (alive(n) && editable.count(n))
                 smoothNode(n);
+    }
+
+    // --- glued cracks ---
+    // A crack whose two walls are both in the region (a cut partway in, a chip left hanging)
+    // has two coincident nodes at each place, one per wall. Improving each wall on its own
+    // pushes one into the other: on a curved or uneven wall a collapse or a move that keeps the
+    // volume of one side bulges it out as much as it dents it. So for the pass the copies are
+    // glued into one node and the walls' faces become inner faces of the mesh ("crack faces",
+    // kept: no flip or split removes them, a collapse only where the link condition, which sees
+    // them as boundary, holds); what the pass does to the crack it then does to both walls at
+    // once. Afterwards every node is given one copy per side of the crack around it again.
+
+    /// Glues each group of coincident region nodes (same reference and current position and
+    /// velocity; two walls of a crack, or more where cracks meet) into its first node, where
+    /// the glued star is sound (gluedStarIsSound).
+    void glue() {
+        // The candidates, by exact reference position.
+        std::unordered_map<std::uint64_t, std::vector<int>> byPlace;
+        const auto hashOf = [](const Vec3& p) {
+            std::uint64_t h = 0;
+            for (int k = 0; k < 3; ++k) {
+                std::uint64_t bits;
+                const double x = p[k] == 0 ? 0.0 : p[k];  // -0 and 0 alike
+                std::memcpy(&bits, &x, sizeof bits);
+                h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
+            }
+            return h;
+        };
+        for (int n : nodes)
+            if (editable.count(n) && !m.nodeTets(n).empty())
+                byPlace[hashOf(m.ref(n))].push_back(n);
+        // Their twins outside the region (the other wall of an old crack, beyond the rings)
+        // join it: glued, both walls change together.
+        if (o.grid && !o.grid->empty()) {
+            std::vector<int> near, joining;
+            for (const auto& [h, group] : byPlace) {
+                const int n = group.front();
+                const Vec3 p = m.pos(n);
+                o.grid->query(Eigen::AlignedBox3d(p, p), near);
+                for (int t : near) {
+                    if (t >= m.tetCount())
+                        continue;
+                    for (int u : m.tet(t))
+                        if (u != n && !editable.count(u) && m.ref(u) == m.ref(n) && m.pos(u) == p && !keptOut(m.ref(u)) &&
+                            std::find(fixedInRegion.begin(), fixedInRegion.end(), u) == fixedInRegion.end())
+                            joining.push_back(u);
+                }
+            }
+            std::sort(joining.begin(), joining.end());
+            joining.erase(std::unique(joining.begin(), joining.end()), joining.end());
+            for (int u : joining) {
+                byPlace[hashOf(m.ref(u))].push_back(u);
+                editable.insert(u);
+                flippable.insert(u);
+                nodes.push_back(u);
+            }
+        }
+        std::vector<std::vector<int>> groups;
+        for (auto& [h, group] : byPlace) {
+            if (group.size() != 2)
+                continue;
+            std::sort(group.begin(), group.end());
+            const int x = group.front();
+            const bool same = std::all_of(group.begin(), group.end(), [&](int y) {
+                return m.ref(x) == m.ref(y) && m.pos(x) == m.pos(y) && m.velocities()[x] == m.velocities()[y];
+            });
+            if (same)
+                groups.push_back(group);
+        }
+        std::sort(groups.begin(), groups.end());
+        std::unordered_map<int, int> repOf;  // copy -> the node it is glued into
+        const auto mapped = [&](int v) {
+            const auto it = repOf.find(v);
+            return it == repOf.end() ? v : it->second;
+        };
+        const auto mapAll = [&] {
+            repOf.clear();
+            for (const std::vector<int>& g : groups)
+                for (std::size_t k = 1; k < g.size(); ++k)
+                    repOf[g[k]] = g[0];
+        };
+        // Drop the groups whose glued stars would be wrong, until none is.
+        for (int round = 0; round < 8 && !groups.empty(); ++round) {
+            mapAll();
+            std::vector<std::vector<int>> kept;
+            for (const std::vector<int>& g : groups)
+                if (gluedStarIsSound(g, mapped))
+                    kept.push_back(g);
+            const bool stable = kept.size() == groups.size();
+            groups = std::move(kept);
+            if (stable)
+                break;
+        }
+        mapAll();
+        if (groups.empty())
+            return;
+        // The crack faces: boundary faces at glued nodes (each once) that pair up once mapped.
+        std::unordered_set<TriKey, TriKeyHash> seen;
+        std::unordered_map<TriKey, int, TriKeyHash> count;
+        for (const std::vector<int>& g : groups)
+            for (int v : g)
+                for (const Face& f : boundaryFacesAt(starOf(v), v))
+                    if (seen.insert(TriKey::of(f.nodes)).second)
+                        ++count[TriKey::of(mapped(f.nodes[0]), mapped(f.nodes[1]), mapped(f.nodes[2]))];
+        for (const auto& [key, c] : count)
+            if (c == 2)
+                crack.insert(key);
+        for (const std::vector<int>& g : groups) {
+            const int x = g.front();
+            for (std::size_t k = 1; k < g.size(); ++k) {
+                const int y = g[k];
+                const std::vector<int> tets(m.nodeTets(y).begin(), m.nodeTets(y).end());
+                for (int t : tets) {
+                    forget(t);
+                    m.replaceTet(t, replaced(m.tet(t), y, x));
+                }
+                editable.erase(y);
+                spares[x].push_back(y);
+                ++r.gluedNodes;
+            }
+            touched.insert(x);
+        }
+    }
+
+    /// Whether gluing the group into its first node x (and the other groups, `mapped`) gives x
+    /// a sound star: no tet with a repeated node or twice, every face at x in at most two tets
+    /// and, in two, with opposite orientations, and the star one piece across its faces.
+    template <class Map>
+    bool gluedStarIsSound(const std::vector<int>& group, const Map& mapped) const {
+        const int x = group.front();
+        std::vector<Tet> star;
+        for (int v : group)
+            for (int t : m.nodeTets(v)) {
+                Tet q = m.tet(t);
+                for (int& u : q)
+                    u = mapped(u);
+                star.push_back(q);
+            }
+        std::vector<Tet> sortedTets;
+        for (const Tet& q : star) {
+            Tet sq = q;
+            std::sort(sq.begin(), sq.end());
+            if (std::adjacent_find(sq.begin(), sq.end()) != sq.end())
+                return false;
+            sortedTets.push_back(sq);
+        }
+        std::sort(sortedTets.begin(), sortedTets.end());
+        if (std::adjacent_find(sortedTets.begin(), sortedTets.end()) != sortedTets.end())
+            return false;
+        // Faces at x: by their other two nodes, with the tets that have them and the orientation.
+        std::unordered_map<std::uint64_t, std::vector<std::pair<int, Tri>>> faces;
+        for (int i = 0; i < static_cast<int>(star.size()); ++i)
+            for (const auto& lf : kTetFaces) {
+                const Tri f{star[i][lf[0]], star[i][lf[1]], star[i][lf[2]]};
+                const int k = f[0] == x ? 0 : f[1] == x ? 1 : f[2] == x ? 2 : -1;
+                if (k >= 0)
+                    faces[linkEdge(f[(k + 1) % 3], f[(k + 2) % 3])].push_back({i, f});
+            }
+        std::vector<int> parent(star.size());
+        std::iota(parent.begin(), parent.end(), 0);
+        const auto root = [&](int i) {
+            while (parent[i] != i)
+                i = parent[i] = parent[parent[i]];
+            return i;
+        };
+        const auto rot = [&](const Tri& f) {
+            const int k = f[0] == x ? 0 : f[1] == x ? 1 : 2;
+            return std::array<int, 2>{f[(k + 1) % 3], f[(k + 2) % 3]};
+        };
+        for (const auto& [key, list] : faces) {
+            if (list.size() > 2)
+                return false;
+            if (list.size() == 2) {
+                const auto p = rot(list[0].second), q = rot(list[1].second);
+                if (!(p[0] == q[1] && p[1] == q[0]))
+                    return false;
+                parent[root(list[0].first)] = root(list[1].first);
+            }
+        }
+        for (std::size_t i = 0; i < star.size(); ++i)
+            if (root(static_cast<int>(i)) != root(0))
+                return false;
+        return true;
+    }
+
+    /// Gives each node of a glued crack one copy per side of the crack around it (its tets
+    /// joined across faces that are not crack faces), reusing the copies glued into it; the
+    /// copies left over merge into it.
+    void unglue() {
+        std::vector<int> onCrack;
+        for (const auto& [x, pool] : spares)
+            if (!pool.empty())
+                onCrack.push_back(x);
+        for (const TriKey& k : crack)
+            for (int v : {k.a, k.b, k.c})
+                onCrack.push_back(v);
+        std::sort(onCrack.begin(), onCrack.end());
+        onCrack.erase(std::unique(onCrack.begin(), onCrack.end()), onCrack.end());
+        for (int x : onCrack) {
+            if (!alive(x))
+                continue;
+            const std::vector<int> tets(m.nodeTets(x).begin(), m.nodeTets(x).end());
+            std::vector<int> parent(tets.size());
+            std::iota(parent.begin(), parent.end(), 0);
+            const auto root = [&](int i) {
+                while (parent[i] != i)
+                    i = parent[i] = parent[parent[i]];
+                return i;
+            };
+            std::unordered_map<std::uint64_t, int> firstWith;
+            for (int i = 0; i < static_cast<int>(tets.size()); ++i) {
+                const Tet& q = m.tet(tets[i]);
+                for (const auto& lf : kTetFaces) {
+                    const Tri f{q[lf[0]], q[lf[1]], q[lf[2]]};
+                    const int k = f[0] == x ? 0 : f[1] == x ? 1 : f[2] == x ? 2 : -1;
+                    if (k < 0 || crack.count(TriKey::of(f)))
+                        continue;
+                    const auto [it, inserted] = firstWith.emplace(linkEdge(f[(k + 1) % 3], f[(k + 2) % 3]), i);
+                    if (!inserted)
+                        parent[root(i)] = root(it->second);
+                }
+            }
+            std::vector<int> sectorRoots;
+            for (int i = 0; i < static_cast<int>(tets.size()); ++i)
+                if (root(i) == i)
+                    sectorRoots.push_back(i);
+            if (sectorRoots.size() < 2)
+                continue;
+            std::vector<int>& pool = spares[x];
+            const Vec3 ref = m.ref(x), pos = m.pos(x), vel = m.velocities()[x];
+            for (std::size_t s = 1; s < sectorRoots.size(); ++s) {
+                int v;
+                if (!pool.empty()) {
+                    v = pool.back();
+                    pool.pop_back();
+                } else {
+                    v = m.addNode(ref, pos);
+                    nodes.push_back(v);
+                }
+                cutMarkOf[v] = true;
+                for (int i = 0; i < static_cast<int>(tets.size()); ++i)
+                    if (root(i) == sectorRoots[s]) {
+                        forget(tets[i]);
+                        m.replaceTet(tets[i], replaced(m.tet(tets[i]), x, v));
+                    }
+                moveNode(v, ref, pos, vel);
+                ++r.ungluedNodes;
+            }
+            for (int t : m.nodeTets(x))
+                touched.insert(m.tet(t).begin(), m.tet(t).end());
+        }
+        // Copies no side needs: merged into the node they were glued into (or its successor).
+        for (auto& [x, pool] : spares)
+            for (int y : pool) {
+                int into = x;
+                while (mergedInto.count(into))
+                    into = mergedInto.at(into);
+                mergedInto[y] = into;
+                moved.erase(y);
+                touched.erase(y);
+            }
+        spares.clear();
+        crack.clear();
     }
 
     // --- the end: removed nodes leave, the renumbering, masses ---

@@ -45,17 +45,30 @@
 // a cut's surface keep the freedom above (a rim node, on both, may go into the body along the
 // cut, never out of it). Both up to rounding and to the chordal slack of smooth curved patches
 // (BodySurface::side): exact on flat patches and at sharp edges.
+// Glued cracks (glueCracks; issue 16): where both walls of a crack are in the region (a cut
+// partway in, a piece kept), each pair of coincident copies is glued into one node for the
+// pass and the paired wall faces become inner "crack faces" that no flip or split removes, so
+// whatever the pass does to a crack it does to both walls, and neither goes into the other. A
+// node on the crack slides along it keeping the volume of each side; a rim node (crack and
+// body's surface) keeps the body's and each side's (it moves along the line where both are
+// unchanged); a front node (the crack ends at it) moves as any boundary node; where cracks
+// meet a node stays. No node of a crack goes farther than maxCrackDrift from the cuts' sweeps
+// (cutDistance). A collapse may join the walls at a node only on a crack that ends inside the
+// tissue somewhere (so it cannot join two pieces). Afterwards every node gets one copy per side
+// of the crack around it again. Where the region is still below weakRatio or weakEdge, the
+// sweeps run once more with the walls on their own, which may push one into the other there.
 // A moved node's current position and velocity come from the tet of its old neighbourhood that
 // contains its new reference position (the deformation is carried over, not reset). Masses
 // follow Eq. 3 for every node whose tets changed. The volume of the mesh, hence its mass, is
-// unchanged up to rounding; no tet straddles a cut (collapses and moves stay within the
-// pieces they start in).
+// unchanged up to rounding. Collapses and moves stay within the pieces they start in; where
+// both walls of a crack stay, see "glued cracks" above for how far they keep apart.
 
 #include "core/mesh/renumbering.h"
 #include "core/mesh/tet_mesh.h"
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -63,6 +76,7 @@
 namespace resect {
 
 class BodySurface;
+class TetGrid;
 
 /// Accepted ranges of ImproveOptions (messages print them).
 struct ImproveLimits {
@@ -107,6 +121,22 @@ struct ImproveOptions {
     /// cut's surface that is on the body too (a rim node) may go into the body along the cut,
     /// never out of it. Empty: no node is on a cut's surface.
     std::span<const std::uint8_t> cutSurfaceNodes;
+    /// Glue the walls of cracks in the region for the pass (both walls of a crack change
+    /// together, so neither goes into the other; see "glued cracks" in improve_mesh.cpp).
+    bool glueCracks = true;
+    /// The mesh's spatial index (current positions), where glueCracks finds the other wall of
+    /// a crack beyond the region; null: only walls within the region are glued.
+    const TetGrid* grid = nullptr;
+    /// Distance of a reference point from the cuts' sweeps (null: none known). A node of a glued
+    /// crack is never placed farther from them than maxCrackDrift or than it already was, so
+    /// a crack stays where its cut was made over many passes (the sweeps were made on the
+    /// tissue as it was deformed then: exact where it was at rest).
+    std::function<double(const Vec3&)> cutDistance;
+    double maxCrackDrift = 0;
+    /// After a pass with glued cracks, where a tet of the region is still below weakRatio or an
+    /// edge below weakEdge, the sweeps again with the walls on their own (0: never).
+    double weakRatio = 0;
+    double weakEdge = 0;
     double density = 1e-3;      ///< g/mm^3, for the masses of Eq. 3
     /// A box no node may move into (the anchored region, whose new nodes are anchored by
     /// position; reference positions).
@@ -129,6 +159,9 @@ struct ImproveResult {
     int flips = 0;             ///< 2-3 and 3-2 flips
     int splits = 0;            ///< edges split (nodes added)
     int removedTets = 0, removedNodes = 0;
+    int gluedNodes = 0;        ///< copies glued to their twins for the pass (see glueCracks)
+    int ungluedPasses = 0;     ///< passes that ran the sweeps again unglued (weakRatio, weakEdge)
+    int ungluedNodes = 0;      ///< copies given back to a side of a crack after it
     double worstBefore = 1, worstAfter = 1;  ///< smallest radius ratio over the region's tets
     /// Final indices of the nodes that moved (smoothing, merged nodes) and of every node whose
     /// tets changed (their masses were updated); sorted.

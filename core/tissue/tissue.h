@@ -224,6 +224,9 @@ private:
     /// The body's surface as created (the improvement keeps every node in the body and the
     /// nodes of the body's surface on it); shared by copies: it never changes.
     std::shared_ptr<const BodySurface> m_body;
+    /// Every cut's sweep, so that the improvement keeps cracks where their cuts made them
+    /// (ImproveOptions::cutDistance); shared by copies: a sweep never changes.
+    std::vector<std::shared_ptr<const SweepSurface>> m_sweeps;
     int m_stepsSeen = 0;        ///< simulator steps when the tissue last looked
     bool m_indexStale = false;  ///< the tets moved since the spatial index was built
     bool m_surfaceStale = true; ///< the tets moved since the surface last followed them

@@ -99,8 +99,10 @@ const Case kCases[] = {
 
 // Recorded at 166185c (RESECT_PRINT_GOLDEN=1), the rows with the mesh improvement again after
 // its smoothing raised near-tied tets together, split edges and ran again around what it left
-// bad (issue 16), and again when it kept every node in the body and the nodes of the body's
-// surface on it (issue 16); one row per cut.
+// bad (issue 16), again when it kept every node in the body and the nodes of the body's
+// surface on it (issue 16), and again when it glued the two walls of each crack for the pass
+// (issue 16: the later cuts of polyp-defaults and box-defaults-1e-3, which leave cracks whose
+// walls both stay); one row per cut.
 struct Golden {
     const char* name;
     Fingerprint f;
