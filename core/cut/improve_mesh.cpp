@@ -858,6 +858,9 @@ private:
             boundaryEnds.push_back(b);
         const bool pure = bodyOnly(boundaryEnds, edgeScale);
 
+        // The overlap guard (boundary collapses): b's tets are replaced, b is gone.
+        const GuardEdge guardScope(*this, b, -1);
+        OverlapGuard guard(*this, before, after, a, boundary && o.overlapGuard);
         Placement best;
         const Vec3 pa = m.ref(a), pb = m.ref(b);
         // Candidates: either end or the midpoint; on the boundary only those on the old
@@ -981,6 +984,8 @@ private:
             cand.ref = p;
             mapToCurrent(before, p, cand.pos, cand.vel);
             if (!allPositive(after, a, cand.pos, true))
+                continue;
+            if (guard.refuses(p))
                 continue;
             cand.worst = worst;
             best = cand;
@@ -1453,6 +1458,7 @@ private:
                 children.push_back(replaced(m.tet(u), b, v));
                 children.push_back(replaced(m.tet(u), a, v));
             }
+            const GuardEdge guardScope(*this, a, b);
             const double worstAtMid = worstAround(children, v, mid);
             Vec3 x = mid;
             if (const std::optional<Vec3> better = bestPosition(v, children, worstAtMid))
@@ -1504,6 +1510,171 @@ private:
                 return false;
         return true;
     }
+
+    // --- overlap guard ---
+    // Where the walls of a crack are not glued (their triangulations differ, cracks meet, or
+    // the pass runs unglued), a boundary node moved on its own can go into the tissue on the
+    // other side, or bring the other side into its tets. The guard measures that in reference
+    // positions and refuses a placement that makes it deeper than it was.
+
+    /// Tets and nodes near the tets `star` (within `margin` of their box, reference positions)
+    /// that the star does not replace (those at v, and see guardEdge): the region's, live as the
+    /// pass changes them (the tets at its nodes within reach of the box), and the mesh's (the
+    /// cutter's grid, registered by current positions, where nothing changed). Corners, boxes
+    /// and node positions are taken once; a placement the guard checks stays in `box`.
+    struct Nearby {
+        Eigen::AlignedBox3d box;
+        std::vector<Tet> tets;
+        std::vector<std::array<Vec3, 4>> corners;
+        std::vector<Eigen::AlignedBox3d> boxes;
+        std::vector<int> nodes;
+    };
+    Nearby nearby(const std::vector<Tet>& star, int v, double margin) const {
+        Eigen::AlignedBox3d refBox, posBox;
+        for (const Tet& q : star)
+            for (int u : q) {
+                refBox.extend(m.ref(u));
+                posBox.extend(m.pos(u));
+            }
+        const auto padded = [](const Eigen::AlignedBox3d& b, double pad) {
+            return Eigen::AlignedBox3d(b.min() - Vec3::Constant(pad), b.max() + Vec3::Constant(pad));
+        };
+        Nearby n;
+        n.box = padded(refBox, margin);
+        std::vector<int> tets;
+        if (o.grid && !o.grid->empty())
+            o.grid->query(padded(posBox, margin), tets);
+        const Eigen::AlignedBox3d reach = padded(n.box, std::max(margin, o.maxEdge));
+        for (int u : nodes)
+            if (alive(u) && reach.contains(m.ref(u)))
+                tets.insert(tets.end(), m.nodeTets(u).begin(), m.nodeTets(u).end());
+        std::sort(tets.begin(), tets.end());
+        tets.erase(std::unique(tets.begin(), tets.end()), tets.end());
+        const auto [ga, gb] = guardEdge;
+        for (int t : tets) {
+            if (t < 0 || t >= m.tetCount())
+                continue;
+            const Tet& q = m.tet(t);
+            if (contains(q, v) || (ga >= 0 && contains(q, ga) && (gb < 0 || contains(q, gb))))
+                continue;
+            Eigen::AlignedBox3d box;
+            for (int u : q)
+                box.extend(m.ref(u));
+            if (!box.intersects(n.box))
+                continue;
+            n.tets.push_back(q);
+            n.corners.push_back({m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3])});
+            n.boxes.push_back(box);
+            for (int u : q)
+                if (n.box.contains(m.ref(u)))
+                    n.nodes.push_back(u);
+        }
+        std::sort(n.nodes.begin(), n.nodes.end());
+        n.nodes.erase(std::unique(n.nodes.begin(), n.nodes.end()), n.nodes.end());
+        return n;
+    }
+    static bool contains(const Tet& q, int u) { return u >= 0 && std::find(q.begin(), q.end(), u) != q.end(); }
+
+    /// The longest edge of the tets `star` with node v at p (v < 0: as they are).
+    double starLongestEdge(const std::vector<Tet>& star, int v, const Vec3& p) const {
+        double longest = 0;
+        for (const Tet& q : star)
+            for (const auto& e : kTetEdges) {
+                const Vec3& x = q[e[0]] == v ? p : m.ref(q[e[0]]);
+                const Vec3& y = q[e[1]] == v ? p : m.ref(q[e[1]]);
+                longest = std::max(longest, (x - y).norm());
+            }
+        return longest;
+    }
+
+    /// Depth of point x strictly inside the tet with corners c (distance to its nearest face
+    /// plane; exact orient3d decides inside), else 0.
+    static double depthInside(const Vec3& x, const std::array<Vec3, 4>& c) {
+        if (!(orient3d(x, c[1], c[2], c[3]) > 0 && orient3d(c[0], x, c[2], c[3]) > 0 && orient3d(c[0], c[1], x, c[3]) > 0 &&
+              orient3d(c[0], c[1], c[2], x) > 0))
+            return 0;
+        double depth = std::numeric_limits<double>::infinity();
+        for (int i = 0; i < 4; ++i) {
+            const Vec3 &a = c[(i + 1) % 4], &b = c[(i + 2) % 4], &d = c[(i + 3) % 4];
+            const Vec3 n = (b - a).cross(d - a);
+            const double len = n.norm();
+            if (len > 0)
+                depth = std::min(depth, std::abs(n.dot(x - a)) / len);
+        }
+        return std::isfinite(depth) ? depth : 0;
+    }
+
+    /// How deep the tets `star` (node v at p) and the mesh `near` them reach into each other:
+    /// the deepest of a star node strictly inside a nearby tet, and of a node strictly inside a
+    /// star tet it is not a corner of (a nearby node, or a star node where the star folds over
+    /// itself; the node a collapse removes, guardEdge, is not counted).
+    double intrusion(const std::vector<Tet>& star, int v, const Vec3& p, const Nearby& near) const {
+        if (!near.box.contains(p))
+            return std::numeric_limits<double>::infinity();  // beyond what `near` holds
+        const auto [ga, gb] = guardEdge;
+        const int gone = gb < 0 ? ga : -1;
+        const auto at = [&](int u) -> const Vec3& { return u == v ? p : m.ref(u); };
+        std::vector<int> starNodes;
+        for (const Tet& q : star)
+            starNodes.insert(starNodes.end(), q.begin(), q.end());
+        std::sort(starNodes.begin(), starNodes.end());
+        starNodes.erase(std::unique(starNodes.begin(), starNodes.end()), starNodes.end());
+        double deepest = 0;
+        for (std::size_t i = 0; i < near.tets.size(); ++i)
+            for (int u : starNodes)
+                if (near.boxes[i].contains(at(u)) && !contains(near.tets[i], u))
+                    deepest = std::max(deepest, depthInside(at(u), near.corners[i]));
+        for (const Tet& q : star) {
+            const std::array<Vec3, 4> c = {at(q[0]), at(q[1]), at(q[2]), at(q[3])};
+            Eigen::AlignedBox3d box;
+            for (const Vec3& x : c)
+                box.extend(x);
+            for (int u : near.nodes)
+                if (u != v && u != gone && !contains(q, u) && box.contains(m.ref(u)))
+                    deepest = std::max(deepest, depthInside(m.ref(u), c));
+            for (int u : starNodes)
+                if (u != v && !contains(q, u) && box.contains(at(u)))
+                    deepest = std::max(deepest, depthInside(at(u), c));
+        }
+        return deepest;
+    }
+
+    /// The edge whose tets the star being placed replaces (see intrusion()); {-1, -1}: none.
+    mutable std::pair<int, int> guardEdge{-1, -1};
+    struct GuardEdge {
+        const Pass& pass;
+        GuardEdge(const Pass& p, int a, int b) : pass(p) { pass.guardEdge = {a, b}; }
+        ~GuardEdge() { pass.guardEdge = {-1, -1}; }
+    };
+
+    /// The overlap guard for placing node v (now at its reference position) with the tets
+    /// `before` around it as the tets `after`: on first use it measures `before` (intrusion()),
+    /// then refuses a placement that makes `after` reach deeper, and deeper than
+    /// ImproveOptions::overlapSlack times the longest edge of `before`.
+    class OverlapGuard {
+    public:
+        OverlapGuard(const Pass& pass, const std::vector<Tet>& before, const std::vector<Tet>& after, int v, bool on)
+            : m_pass(pass), m_before(before), m_after(after), m_v(v), m_on(on) {}
+        bool refuses(const Vec3& p) {
+            if (!m_on)
+                return false;
+            if (!m_near) {
+                m_near = m_pass.nearby(m_before, m_v, m_pass.starLongestEdge(m_before, -1, Vec3::Zero()));
+                const double slack = m_pass.o.overlapSlack * m_pass.starLongestEdge(m_before, -1, Vec3::Zero());
+                m_depth = std::max(m_pass.intrusion(m_before, m_v, m_pass.m.ref(m_v), *m_near), slack);
+            }
+            return m_pass.intrusion(m_after, m_v, p, *m_near) > m_depth;
+        }
+
+    private:
+        const Pass& m_pass;
+        const std::vector<Tet>& m_before;
+        const std::vector<Tet>& m_after;
+        int m_v;
+        bool m_on;
+        std::optional<Nearby> m_near;
+        double m_depth = 0;
+    };
 
     bool smoothNode(int v) {
         const std::vector<Tet> star = starOf(v);
@@ -1636,6 +1807,7 @@ private:
         }
         if (boundary)
             normal = gradient.normalized();
+        OverlapGuard guard(*this, star, star, v, boundary && o.overlapGuard);
         // A rim node (crack and body's surface) keeps the body's volume and each side's: it
         // moves only along the line where both are what they are (both are affine in its place).
         if (rim) {
@@ -1674,6 +1846,8 @@ private:
             }
             if (!at || keptOut(*at) || (boundary && leavesBody(x0, *at, pure, edgeScale)) ||
                 !allPositive(star, v, *at) || (onCrack && drifts(x0, *at)))
+                return std::nullopt;
+            if (guard.refuses(*at))
                 return std::nullopt;
             if (boundary && distanceTo(x0, faces, v, *at) > tolerance)
                 return std::nullopt;

@@ -343,10 +343,11 @@ private slots:
         // (3.013 + s sin(7k + 1), 2.987 + s cos(5k + 2)) for s = 0, 0.02, ..., 0.5 mm. The worst
         // tet after any cut, over the input's: at least 0.5 in most placements and never
         // catastrophic; no node ever outside the box, and the nodes of its surface within 1 % of
-        // a cell of it (offTheBox). Measured: 19 of 26 at 0.5 or more, 0.534 on average, 0.294
-        // at the least, no node outside, the box's surface nodes on it up to rounding (with
-        // each crack wall improved on its own, before the glued cracks: 19, 0.544, 0.30, and
-        // 0.0051 mm off the surface in one placement). Before the
+        // a cell of it (offTheBox). Measured: 23 of 26 at 0.5 or more, 0.571 on average, 0.314
+        // at the least, no node outside, the box's surface nodes on it up to rounding (before the
+        // improvement's overlap guard: 19, 0.534, 0.294; with each crack wall improved on its
+        // own, before the glued cracks: 19, 0.544, 0.30, and 0.0051 mm off the surface in one
+        // placement). Before the
         // improvement kept to the body's surface: 16, 0.51, 0.26, with nodes up to 0.43 mm
         // outside the box; before issue 16's splits and repeated passes: 2, 0.34, 0.02. Issue
         // 16 asks 0.5 everywhere: not reached yet.
@@ -387,26 +388,26 @@ private slots:
               "the least; nodes of the box's surface at most %.3g mm off it; overlap %.3g mm",
               placements, good, sum / placements, least, offSurface, overlap);
         // Known defect (README, "Crack walls: glued for the improvement"): the improvement reaches these figures
-        // partly by pushing one wall of a crack into the other (0.21 mm, measured; 0.22 with
-        // the walls improved on their own, before the glued cracks: where the pass runs again
-        // unglued, ImproveOptions::weakRatio, and where walls are triangulated apart). Issue 16
-        // asks for none; this bound only keeps it from growing unseen.
-        QVERIFY2(overlap <= 0.25, qPrintable(QString::number(overlap)));
+        // partly by pushing one wall of a crack into the other (0.131 mm, measured, with the
+        // overlap guard's slack, ImproveOptions::overlapSlack; 0.21 before the guard, 0.22 with
+        // the walls improved on their own, before the glued cracks). Issue 16 asks for none;
+        // this bound only keeps it from growing unseen.
+        QVERIFY2(overlap <= 0.15, qPrintable(QString::number(overlap)));
         QVERIFY2(offSurface <= 0.01, qPrintable(QString::number(offSurface)));
-        QVERIFY2(good >= 18, qPrintable(QString::number(good)));
-        QVERIFY2(sum / placements >= 0.53, qPrintable(QString::number(sum / placements)));
-        QVERIFY2(least >= 0.28, qPrintable(QString::number(least)));
+        QVERIFY2(good >= 21, qPrintable(QString::number(good)));
+        QVERIFY2(sum / placements >= 0.56, qPrintable(QString::number(sum / placements)));
+        QVERIFY2(least >= 0.3, qPrintable(QString::number(least)));
     }
 
     void tenScoopsThroughTheTissue() {
         // The ten intersecting scoops as the product makes them (Tissue::cut at the defaults:
         // the mesh improvement after every cut, chips off the anchored base removed): the
         // remaining tissue keeps its worst element within 0.5 times the input's after every
-        // cut (the bare cutter above leaves 3e-5; measured 0.70 at worst, 0.52 before the glued
-        // cracks), no node leaves the
+        // cut (the bare cutter above leaves 3e-5; measured 0.58 at worst, 0.70 before the
+        // improvement's overlap guard, 0.52 before the glued cracks), no node leaves the
         // box's surface (none outside it, those of its surface on it up to rounding), its
         // stable step stays within a factor 7 of the input's, and it simulates stably at that
-        // step. (The same ten scoops moved by up to 0.5 mm reach 0.5 in 19 placements of 26:
+        // step. (The same ten scoops moved by up to 0.5 mm reach 0.5 in 23 placements of 26:
         // tenScoopsMovedAbout.)
         HardCase c = makeCase("ten intersecting scoops");
         const Material material;
@@ -440,10 +441,11 @@ private slots:
               "(input %.3g), stable dt %.3g s (input %.3g s); overlap %.3g mm",
               tissue.mesh().tetCount(), tissue.chips().size(), summarizeQuality(tissue.mesh()).minRadiusRatio, worst,
               ratio0, dt, dt0, overlap);
-        // Known defect (README, "Crack walls: glued for the improvement"): from the third cut on, one wall of a
-        // crack is pushed 0.15 mm into another (measured; 0.19 mm before the glued cracks).
-        // This bound keeps it from growing unseen.
-        QVERIFY2(overlap <= 0.2, qPrintable(QString::number(overlap)));
+        // Known defect (README, "Crack walls: glued for the improvement"): one wall of a crack
+        // is pushed 0.068 mm into another (measured, within the overlap guard's slack; 0.15 mm
+        // before the guard, 0.19 mm before the glued cracks). This bound keeps it from growing
+        // unseen.
+        QVERIFY2(overlap <= 0.08, qPrintable(QString::number(overlap)));
         QVERIFY(dt >= 0.15 * dt0);  // measured 0.40 x (the bare cutter: 1e-4 x)
         if (const auto problems = checkValidity(tissue.mesh()); !problems.empty())
             QFAIL(problems.front().message.c_str());

@@ -102,7 +102,8 @@ const Case kCases[] = {
 // bad (issue 16), again when it kept every node in the body and the nodes of the body's
 // surface on it (issue 16), and again when it glued the two walls of each crack for the pass
 // (issue 16: the later cuts of polyp-defaults and box-defaults-1e-3, which leave cracks whose
-// walls both stay); one row per cut.
+// walls both stay), and again when the improvement's overlap guard came (issue 16: the same
+// rows' later cuts, where walls that are not glued meet); one row per cut.
 struct Golden {
     const char* name;
     Fingerprint f;
