@@ -57,6 +57,11 @@
 // tissue somewhere (so it cannot join two pieces). Afterwards every node gets one copy per side
 // of the crack around it again. Where the region is still below weakRatio or weakEdge, the
 // sweeps run once more with the walls on their own, which may push one into the other there.
+// Overlap guard (overlapGuard; issue 16): where walls are not glued (triangulated differently,
+// cracks meeting), a boundary node's placement by smoothing or a collapse is refused where the
+// mesh around it would reach deeper into itself (a node strictly inside a tet it is not a
+// corner of, reference positions, exact orient3d) than it did and than overlapSlack of the
+// longest edge around it.
 // A moved node's current position and velocity come from the tet of its old neighbourhood that
 // contains its new reference position (the deformation is carried over, not reset). Masses
 // follow Eq. 3 for every node whose tets changed. The volume of the mesh, hence its mass, is
