@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QProcess>
+#include <QRandomGenerator>
 #include <QStandardPaths>
 #include <QThread>
 
@@ -16,6 +17,11 @@ namespace {
 constexpr int kPlotAttempts = 4;
 constexpr int kRetryPauseMs = 1000;          // time for a clashing Xvfb to settle
 constexpr int kPlotterTimeoutMs = 600000;   // 10 minutes
+// xvfb-run -a looks for a free display from 99 on, where another Xvfb may be running unseen
+// (a server whose lock file we cannot see still owns the abstract socket of its display, and
+// our client then talks to it: "bad X server connection" on every attempt, seen in CI). Each
+// run starts its search at a random number in this range instead.
+constexpr int kFirstDisplay = 200, kLastDisplay = 899;
 
 /// One run; `ownDisplay`: under a fresh `xvfb-run -a` even if DISPLAY is set.
 std::string runOnce(const QStringList& plotterArgs, bool ownDisplay) {
@@ -29,7 +35,8 @@ std::string runOnce(const QStringList& plotterArgs, bool ownDisplay) {
         const QString xvfb = QStandardPaths::findExecutable("xvfb-run");
         if (xvfb.isEmpty())
             return "no X display (DISPLAY is unset) and no xvfb-run to start one (install xvfb)";
-        args = QStringList{"-a", "-s", "-screen 0 1280x1024x24", plotter} + args;
+        const int from = QRandomGenerator::global()->bounded(kFirstDisplay, kLastDisplay + 1);
+        args = QStringList{"-a", "-n", QString::number(from), "-s", "-screen 0 1280x1024x24", plotter} + args;
         program = xvfb;
     }
     QProcess p;
