@@ -1548,12 +1548,17 @@ private:
         for (int u : nodes)
             if (alive(u) && reach.contains(m.ref(u)))
                 tets.insert(tets.end(), m.nodeTets(u).begin(), m.nodeTets(u).end());
-        std::sort(tets.begin(), tets.end());
-        tets.erase(std::unique(tets.begin(), tets.end()), tets.end());
+        if (nearbyMark.size() < static_cast<std::size_t>(m.tetCount()))
+            nearbyMark.resize(m.tetCount(), 0);
+        if (++nearbyEpoch == 0) {
+            std::fill(nearbyMark.begin(), nearbyMark.end(), 0);
+            nearbyEpoch = 1;
+        }
         const auto [ga, gb] = guardEdge;
         for (int t : tets) {
-            if (t < 0 || t >= m.tetCount())
+            if (t < 0 || t >= m.tetCount() || nearbyMark[t] == nearbyEpoch)
                 continue;
+            nearbyMark[t] = nearbyEpoch;
             const Tet& q = m.tet(t);
             if (contains(q, v) || (ga >= 0 && contains(q, ga) && (gb < 0 || contains(q, gb))))
                 continue;
@@ -1573,6 +1578,8 @@ private:
         n.nodes.erase(std::unique(n.nodes.begin(), n.nodes.end()), n.nodes.end());
         return n;
     }
+    mutable std::vector<std::uint32_t> nearbyMark;  ///< per tet: nearby() saw it at this epoch
+    mutable std::uint32_t nearbyEpoch = 0;
     static bool contains(const Tet& q, int u) { return u >= 0 && std::find(q.begin(), q.end(), u) != q.end(); }
 
     /// The longest edge of the tets `star` with node v at p (v < 0: as they are).
@@ -1604,27 +1611,33 @@ private:
         return std::isfinite(depth) ? depth : 0;
     }
 
-    /// How deep the tets `star` (node v at p) and the mesh `near` them reach into each other:
+    /// How deep the tets `star` (with their nodes `starNodes`; node v at p) and the mesh `near`
+    /// them reach into each other:
     /// the deepest of a star node strictly inside a nearby tet, and of a node strictly inside a
     /// star tet it is not a corner of (a nearby node, or a star node where the star folds over
     /// itself; the node a collapse removes, guardEdge, is not counted).
-    double intrusion(const std::vector<Tet>& star, int v, const Vec3& p, const Nearby& near) const {
-        if (!near.box.contains(p))
+    /// Which pairs intrusion() measures: all, those that move with v (v itself, the tets at v),
+    /// or those that do not (the same for every place of v).
+    enum class Pairs { All, WithV, WithoutV };
+    double intrusion(const std::vector<Tet>& star, const std::vector<int>& starNodes, int v, const Vec3& p,
+                     const Nearby& near, Pairs pairs = Pairs::All) const {
+        if (pairs != Pairs::WithoutV && !near.box.contains(p))
             return std::numeric_limits<double>::infinity();  // beyond what `near` holds
         const auto [ga, gb] = guardEdge;
         const int gone = gb < 0 ? ga : -1;
         const auto at = [&](int u) -> const Vec3& { return u == v ? p : m.ref(u); };
-        std::vector<int> starNodes;
-        for (const Tet& q : star)
-            starNodes.insert(starNodes.end(), q.begin(), q.end());
-        std::sort(starNodes.begin(), starNodes.end());
-        starNodes.erase(std::unique(starNodes.begin(), starNodes.end()), starNodes.end());
+        const auto measured = [&](bool withV) { return pairs == Pairs::All || withV == (pairs == Pairs::WithV); };
         double deepest = 0;
-        for (std::size_t i = 0; i < near.tets.size(); ++i)
-            for (int u : starNodes)
+        for (int u : starNodes) {
+            if (!measured(u == v))
+                continue;
+            for (std::size_t i = 0; i < near.tets.size(); ++i)
                 if (near.boxes[i].contains(at(u)) && !contains(near.tets[i], u))
                     deepest = std::max(deepest, depthInside(at(u), near.corners[i]));
+        }
         for (const Tet& q : star) {
+            if (!measured(contains(q, v)))
+                continue;
             const std::array<Vec3, 4> c = {at(q[0]), at(q[1]), at(q[2]), at(q[3])};
             Eigen::AlignedBox3d box;
             for (const Vec3& x : c)
@@ -1661,9 +1674,11 @@ private:
             if (!m_near) {
                 m_near = m_pass.nearby(m_before, m_v, m_pass.starLongestEdge(m_before, -1, Vec3::Zero()));
                 const double slack = m_pass.o.overlapSlack * m_pass.starLongestEdge(m_before, -1, Vec3::Zero());
-                m_depth = std::max(m_pass.intrusion(m_before, m_v, m_pass.m.ref(m_v), *m_near), slack);
+                m_depth = std::max(m_pass.intrusion(m_before, nodesOf(m_before), m_v, m_pass.m.ref(m_v), *m_near), slack);
+                m_afterNodes = nodesOf(m_after);
+                m_still = m_pass.intrusion(m_after, m_afterNodes, m_v, p, *m_near, Pairs::WithoutV);
             }
-            return m_pass.intrusion(m_after, m_v, p, *m_near) > m_depth;
+            return m_still > m_depth || m_pass.intrusion(m_after, m_afterNodes, m_v, p, *m_near, Pairs::WithV) > m_depth;
         }
 
     private:
@@ -1674,6 +1689,16 @@ private:
         bool m_on;
         std::optional<Nearby> m_near;
         double m_depth = 0;
+        double m_still = 0;  ///< the pairs of `after` that do not move with v
+        std::vector<int> m_afterNodes;
+        static std::vector<int> nodesOf(const std::vector<Tet>& tets) {
+            std::vector<int> n;
+            for (const Tet& q : tets)
+                n.insert(n.end(), q.begin(), q.end());
+            std::sort(n.begin(), n.end());
+            n.erase(std::unique(n.begin(), n.end()), n.end());
+            return n;
+        }
     };
 
     bool smoothNode(int v) {
