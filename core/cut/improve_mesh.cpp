@@ -204,6 +204,16 @@ public:
         }
         return r;
     }
+    /// Calls f for every slot below `count` whose element is not the one it held at the start.
+    template <class F>
+    void forEachChangedSlot(int count, F f) const {
+        for (const auto& [slot, origin] : m_map)
+            if (slot < count)
+                f(slot);
+        for (int i = m_start; i < count; ++i)
+            if (!m_map.count(i))
+                f(i);
+    }
     /// The slots (below finalCount) that hold new elements, sorted.
     std::vector<int> newSlots(int finalCount) const {
         std::vector<int> out;
@@ -860,8 +870,11 @@ private:
 
         // The overlap guard (boundary collapses): b's tets are replaced, b is gone.
         const GuardEdge guardScope(*this, b, -1);
-        OverlapGuard guard(*this, before, after, a, boundary && o.overlapGuard);
+        // (Only on the mesh's boundary: a star closed all round, glued crack faces included,
+        // fills the same space wherever its node goes.)
+        OverlapGuard guard(*this, before, after, a, outer && o.overlapGuard);
         Placement best;
+        std::vector<Placement> candidates;
         const Vec3 pa = m.ref(a), pb = m.ref(b);
         // Candidates: either end or the midpoint; on the boundary only those on the old
         // boundary (an end on it, the midpoint of a boundary edge).
@@ -971,7 +984,7 @@ private:
                 }
                 worst = std::min(worst, ratioWith(m, q, a, p));
             }
-            if (!ok || worst <= best.worst)
+            if (!ok)
                 continue;
             if (boundary) {
                 // The nodes that were on the boundary stay near the new one.
@@ -985,11 +998,20 @@ private:
             mapToCurrent(before, p, cand.pos, cand.vel);
             if (!allPositive(after, a, cand.pos, true))
                 continue;
-            if (guard.refuses(p))
-                continue;
             cand.worst = worst;
-            best = cand;
+            candidates.push_back(cand);
         }
+        // The best candidate the overlap guard allows (the guard last: it costs the most, and
+        // most collapses of bad tets' edges end here, their best placement not good enough).
+        std::stable_sort(candidates.begin(), candidates.end(), [](const Placement& x, const Placement& y) { return x.worst > y.worst; });
+        if (candidates.empty() || (!isShort && !(coarsen ? candidates.front().worst >= std::min(o.badRatio, worstBefore)
+                                                         : candidates.front().worst > worstBefore)))
+            return false;  // (as below: no placement is acceptable)
+        for (const Placement& cand : candidates)
+            if (!guard.refuses(cand.ref)) {
+                best = cand;
+                break;
+            }
         if (best.worst < 0)
             return false;
         // An edge below floorEdge goes even if the tets around it get worse, down to floorRatio.
@@ -1541,34 +1563,53 @@ private:
         };
         Nearby n;
         n.box = padded(refBox, margin);
-        std::vector<int> tets;
-        if (o.grid && !o.grid->empty())
-            o.grid->query(padded(posBox, margin), tets);
-        const Eigen::AlignedBox3d reach = padded(n.box, std::max(margin, o.maxEdge));
-        for (int u : nodes)
-            if (alive(u) && reach.contains(m.ref(u)))
-                tets.insert(tets.end(), m.nodeTets(u).begin(), m.nodeTets(u).end());
-        if (nearbyMark.size() < static_cast<std::size_t>(m.tetCount()))
-            nearbyMark.resize(m.tetCount(), 0);
-        if (++nearbyEpoch == 0) {
-            std::fill(nearbyMark.begin(), nearbyMark.end(), 0);
-            nearbyEpoch = 1;
-        }
+        // The candidates that reach into the box and that the star does not replace, each
+        // perhaps more than once (then sorted: the pass costs what its region does, whatever
+        // the mesh's size).
+        std::vector<int> hits;
         const auto [ga, gb] = guardEdge;
-        for (int t : tets) {
-            if (t < 0 || t >= m.tetCount() || nearbyMark[t] == nearbyEpoch)
-                continue;
-            nearbyMark[t] = nearbyEpoch;
+        const auto consider = [&](int t) {
+            if (t < 0 || t >= m.tetCount())
+                return;
             const Tet& q = m.tet(t);
             if (contains(q, v) || (ga >= 0 && contains(q, ga) && (gb < 0 || contains(q, gb))))
-                continue;
+                return;
             Eigen::AlignedBox3d box;
             for (int u : q)
                 box.extend(m.ref(u));
-            if (!box.intersects(n.box))
-                continue;
+            if (box.intersects(n.box))
+                hits.push_back(t);
+        };
+        const Eigen::AlignedBox3d reach = padded(n.box, std::max(margin, o.maxEdge));
+        const auto tetsAt = [&](int u) {
+            if (alive(u) && reach.contains(m.ref(u)))
+                for (int t : m.nodeTets(u))
+                    consider(t);
+        };
+        if (o.grid && !o.grid->empty()) {
+            // The grid holds the tets as they were at the start of the pass; those it may not
+            // hold where they are now are in slots that changed (new, or taken by the last tet
+            // at a removal) or at nodes whose tets the pass changed.
+            std::vector<int> found;
+            o.grid->query(padded(posBox, margin), found);
+            for (int t : found)
+                consider(t);
+            tetOrigin.forEachChangedSlot(m.tetCount(), consider);
+            for (int u : touched)
+                tetsAt(u);
+        } else {
+            for (int u : nodes)
+                tetsAt(u);
+        }
+        std::sort(hits.begin(), hits.end());
+        hits.erase(std::unique(hits.begin(), hits.end()), hits.end());
+        for (int t : hits) {
+            const Tet& q = m.tet(t);
             n.tets.push_back(q);
             n.corners.push_back({m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3])});
+            Eigen::AlignedBox3d box;
+            for (const Vec3& x : n.corners.back())
+                box.extend(x);
             n.boxes.push_back(box);
             for (int u : q)
                 if (n.box.contains(m.ref(u)))
@@ -1578,8 +1619,6 @@ private:
         n.nodes.erase(std::unique(n.nodes.begin(), n.nodes.end()), n.nodes.end());
         return n;
     }
-    mutable std::vector<std::uint32_t> nearbyMark;  ///< per tet: nearby() saw it at this epoch
-    mutable std::uint32_t nearbyEpoch = 0;
     static bool contains(const Tet& q, int u) { return u >= 0 && std::find(q.begin(), q.end(), u) != q.end(); }
 
     /// The longest edge of the tets `star` with node v at p (v < 0: as they are).
@@ -1832,7 +1871,7 @@ private:
         }
         if (boundary)
             normal = gradient.normalized();
-        OverlapGuard guard(*this, star, star, v, boundary && o.overlapGuard);
+        OverlapGuard guard(*this, star, star, v, anyOuter(faces) && o.overlapGuard);
         // A rim node (crack and body's surface) keeps the body's volume and each side's: it
         // moves only along the line where both are what they are (both are affine in its place).
         if (rim) {
