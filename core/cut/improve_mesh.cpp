@@ -1540,10 +1540,10 @@ private:
     // positions and refuses a placement that makes it deeper than it was.
 
     /// Tets and nodes near the tets `star` (within `margin` of their box, reference positions)
-    /// that the star does not replace (those at v, and see guardEdge): the region's, live as the
-    /// pass changes them (the tets at its nodes within reach of the box), and the mesh's (the
-    /// cutter's grid, registered by current positions, where nothing changed). Corners, boxes
-    /// and node positions are taken once; a placement the guard checks stays in `box`.
+    /// that the star does not replace (those at v, and see guardEdge): the cutter's grid's
+    /// (registered by current positions at the start of the pass) and those the pass changed or
+    /// moved (in changed slots, at touched nodes); without a grid, those at the region's nodes.
+    /// Corners and boxes are taken once; a placement the guard checks stays in `box`.
     struct Nearby {
         Eigen::AlignedBox3d box;
         std::vector<Tet> tets;
