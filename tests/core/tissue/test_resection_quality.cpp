@@ -272,8 +272,8 @@ private:
             // in), so it moves them as one; the scoop rows hold it everywhere. Where walls are not
             // glued (triangulated differently after a later cut through an old crack, or cracks
             // meeting), the overlap guard refuses placements that push one into the other beyond
-            // a slack (ImproveOptions::overlapSlack); the cut itself (snapping, relaxation) can
-            // still leave some. Measured on these rows 0.020-0.029 mean edges (0.023-0.095
+            // a slack (ImproveOptions::overlapSlack); a cut across an old crack can still show
+            // some before any improvement (README, "Crack walls"). Measured on these rows 0.020-0.029 mean edges (0.023-0.095
             // without the guard, 0.058-0.12 with the walls improved on their own); bounded at 0.04.
             const MeshOverlap o = deepestOverlap(m);
             overlap = std::max(overlap, o.depth);
