@@ -1621,15 +1621,12 @@ private:
     }
     static bool contains(const Tet& q, int u) { return u >= 0 && std::find(q.begin(), q.end(), u) != q.end(); }
 
-    /// The longest edge of the tets `star` with node v at p (v < 0: as they are).
-    double starLongestEdge(const std::vector<Tet>& star, int v, const Vec3& p) const {
+    /// The longest edge of the tets `star` (reference positions).
+    double longestEdge(const std::vector<Tet>& star) const {
         double longest = 0;
         for (const Tet& q : star)
-            for (const auto& e : kTetEdges) {
-                const Vec3& x = q[e[0]] == v ? p : m.ref(q[e[0]]);
-                const Vec3& y = q[e[1]] == v ? p : m.ref(q[e[1]]);
-                longest = std::max(longest, (x - y).norm());
-            }
+            for (const auto& e : kTetEdges)
+                longest = std::max(longest, (m.ref(q[e[0]]) - m.ref(q[e[1]])).norm());
         return longest;
     }
 
@@ -1650,14 +1647,13 @@ private:
         return std::isfinite(depth) ? depth : 0;
     }
 
-    /// How deep the tets `star` (with their nodes `starNodes`; node v at p) and the mesh `near`
-    /// them reach into each other:
-    /// the deepest of a star node strictly inside a nearby tet, and of a node strictly inside a
-    /// star tet it is not a corner of (a nearby node, or a star node where the star folds over
-    /// itself; the node a collapse removes, guardEdge, is not counted).
     /// Which pairs intrusion() measures: all, those that move with v (v itself, the tets at v),
     /// or those that do not (the same for every place of v).
     enum class Pairs { All, WithV, WithoutV };
+    /// How deep the tets `star` (with their nodes `starNodes`; node v at p) and the mesh `near`
+    /// them reach into each other: the deepest of a star node strictly inside a nearby tet, and
+    /// of a node strictly inside a star tet it is not a corner of (a nearby node, or a star node
+    /// where the star folds over itself; the node a collapse removes, guardEdge, is not counted).
     double intrusion(const std::vector<Tet>& star, const std::vector<int>& starNodes, int v, const Vec3& p,
                      const Nearby& near, Pairs pairs = Pairs::All) const {
         if (pairs != Pairs::WithoutV && !near.box.contains(p))
@@ -1711,8 +1707,9 @@ private:
             if (!m_on)
                 return false;
             if (!m_near) {
-                m_near = m_pass.nearby(m_before, m_v, m_pass.starLongestEdge(m_before, -1, Vec3::Zero()));
-                const double slack = m_pass.o.overlapSlack * m_pass.starLongestEdge(m_before, -1, Vec3::Zero());
+                const double longest = m_pass.longestEdge(m_before);
+                m_near = m_pass.nearby(m_before, m_v, longest);
+                const double slack = m_pass.o.overlapSlack * longest;
                 m_depth = std::max(m_pass.intrusion(m_before, nodesOf(m_before), m_v, m_pass.m.ref(m_v), *m_near), slack);
                 m_afterNodes = nodesOf(m_after);
                 m_still = m_pass.intrusion(m_after, m_afterNodes, m_v, p, *m_near, Pairs::WithoutV);

@@ -58,10 +58,10 @@
 // of the crack around it again. Where the region is still below weakRatio or weakEdge, the
 // sweeps run once more with the walls on their own, which may push one into the other there.
 // Overlap guard (overlapGuard; issue 16): where walls are not glued (triangulated differently,
-// cracks meeting), a boundary node's placement by smoothing or a collapse is refused where the
-// mesh around it would reach deeper into itself (a node strictly inside a tet it is not a
-// corner of, reference positions, exact orient3d) than it did and than overlapSlack of the
-// longest edge around it.
+// cracks meeting), a placement by smoothing or a collapse of a node whose tets meet the mesh's
+// boundary (not a glued crack alone) is refused where the mesh around it would reach deeper
+// into itself (a node strictly inside a tet it is not a corner of, reference positions, exact
+// orient3d) than it did and than overlapSlack of the longest edge around it.
 // A moved node's current position and velocity come from the tet of its old neighbourhood that
 // contains its new reference position (the deformation is carried over, not reset). Masses
 // follow Eq. 3 for every node whose tets changed. The volume of the mesh, hence its mass, is
@@ -142,8 +142,9 @@ struct ImproveOptions {
     /// edge below weakEdge, the sweeps again with the walls on their own (0: never).
     double weakRatio = 0;
     double weakEdge = 0;
-    /// Refuse a placement of a boundary node (smoothing, collapse, split) that makes the mesh
-    /// overlap itself more deeply around it (a node strictly inside a tet it is not a corner
+    /// Refuse a placement (smoothing, also of a split's new node; a collapse's merged node) of a
+    /// node whose tets meet the mesh's boundary that makes the mesh overlap itself more deeply
+    /// around it (a node strictly inside a tet it is not a corner
     /// of; reference positions), so that walls of a crack that are not glued do not go into
     /// each other.
     bool overlapGuard = true;
