@@ -14,8 +14,11 @@ namespace resect::cli {
 
 namespace {
 
-constexpr int kPlotAttempts = 4;
-constexpr int kRetryPauseMs = 1000;          // time for a clashing Xvfb to settle
+// Attempts, and the pause before the second; it doubles after each failure (1, 2, 4, 8 s).
+// CI has seen every attempt of a run meet "bad X server connection" within 5 s, each on a new
+// display (cause not found); a longer wait rides out a condition that passes.
+constexpr int kPlotAttempts = 5;
+constexpr int kRetryPauseMs = 1000;
 constexpr int kPlotterTimeoutMs = 600000;   // 10 minutes
 // xvfb-run -a looks for a free display from 99 on, where another Xvfb may be running unseen
 // (a server whose lock file we cannot see still owns the abstract socket of its display, and
@@ -23,8 +26,10 @@ constexpr int kPlotterTimeoutMs = 600000;   // 10 minutes
 // run starts its search at a random number in this range instead.
 constexpr int kFirstDisplay = 200, kLastDisplay = 899;
 
-/// One run; `ownDisplay`: under a fresh `xvfb-run -a` even if DISPLAY is set.
-std::string runOnce(const QStringList& plotterArgs, bool ownDisplay) {
+/// One run; `ownDisplay`: under a fresh `xvfb-run -a` even if DISPLAY is set. `lasting`: the
+/// failure is one another attempt cannot mend (no plotter, no xvfb-run).
+std::string runOnce(const QStringList& plotterArgs, bool ownDisplay, bool& lasting) {
+    lasting = true;
     const QString plotter = QCoreApplication::applicationDirPath() + "/resect-plot";
     if (!QFileInfo(plotter).isExecutable())
         return "the plotter " + plotter.toStdString() + " is not built";
@@ -39,6 +44,7 @@ std::string runOnce(const QStringList& plotterArgs, bool ownDisplay) {
         args = QStringList{"-a", "-n", QString::number(from), "-s", "-screen 0 1280x1024x24", plotter} + args;
         program = xvfb;
     }
+    lasting = false;
     QProcess p;
     p.setProcessChannelMode(QProcess::ForwardedChannels);
     if (ownDisplay) {
@@ -68,12 +74,16 @@ std::string runPlotter(const QStringList& plotterArgs, const char* who) {
     for (int attempt = 0; attempt < kPlotAttempts; ++attempt) {
         // After a failure, a display of our own: the one we were given may be gone (an Xvfb
         // that lost its display number to another started at the same moment).
-        why = runOnce(plotterArgs, attempt > 0);
+        bool lasting = false;
+        why = runOnce(plotterArgs, attempt > 0, lasting);
         if (why.empty())
             return why;
-        std::fprintf(stderr, "%s: drawing the plots failed (%s)%s\n", who, why.c_str(),
-                     attempt + 1 < kPlotAttempts ? "; trying again" : "");
-        QThread::msleep(kRetryPauseMs);
+        const bool again = !lasting && attempt + 1 < kPlotAttempts;
+        std::fprintf(stderr, "%s: drawing the plots failed (%s)%s\n", who, why.c_str(), again ? "; trying again" : "");
+        if (again)
+            QThread::msleep(static_cast<unsigned long>(kRetryPauseMs) << attempt);
+        else
+            break;
     }
     return why;
 }
