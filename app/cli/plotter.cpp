@@ -80,10 +80,9 @@ std::string runPlotter(const QStringList& plotterArgs, const char* who) {
             return why;
         const bool again = !lasting && attempt + 1 < kPlotAttempts;
         std::fprintf(stderr, "%s: drawing the plots failed (%s)%s\n", who, why.c_str(), again ? "; trying again" : "");
-        if (again)
-            QThread::msleep(static_cast<unsigned long>(kRetryPauseMs) << attempt);
-        else
+        if (!again)
             break;
+        QThread::msleep(static_cast<unsigned long>(kRetryPauseMs) << attempt);
     }
     return why;
 }

@@ -3,12 +3,12 @@
 // fails, rather than skips, when no display can be had. Also resect-plot's own bad input.
 #include "cli_runner.h"
 
+#include <QDebug>
 #include <QDir>
 #include <QFileInfo>
 #include <QImage>
 #include <QSet>
 #include <QTemporaryDir>
-#include <QDebug>
 #include <QTest>
 
 using namespace resect::testing;
