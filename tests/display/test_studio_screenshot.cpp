@@ -140,9 +140,10 @@ void TestStudioScreenshot::rendersSampleUnderXvfb() {
     QFile::remove(png);
 
     // (-n: the search for a free display starts away from xvfb-run's default 99, where a
-    // server we cannot see may be running; tests/display/CMakeLists.txt.)
+    // server we cannot see may be running; tests/display/CMakeLists.txt. -noreset: the
+    // server does not reset between clients; app/cli/plotter.cpp.)
     const QStringList arguments = QStringList{QStringLiteral("-a"), QStringLiteral("-n"), QStringLiteral("389"), QStringLiteral("-s"),
-                                              QStringLiteral("-screen 0 1280x1024x24"),
+                                              QStringLiteral("-screen 0 1280x1024x24 -noreset"),
                                               QStringLiteral(RESECT_STUDIO_EXE)} +
                                   source + QStringList{QStringLiteral("--screenshot"), png};
     const RunResult r = run(xvfbRun, arguments, environmentWithPlatform(QStringLiteral("xcb")));
