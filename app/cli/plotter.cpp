@@ -9,6 +9,8 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <string>
+#include <utility>
 
 namespace resect::cli {
 
@@ -30,25 +32,30 @@ constexpr int kFirstDisplay = 200, kLastDisplay = 899;
 // without -noreset, never with it). resect-plot keeps its connection open too.
 const char* const kXvfbServerArgs = "-screen 0 1280x1024x24 -noreset";
 
-/// One run; `ownDisplay`: under a fresh `xvfb-run -a` even if DISPLAY is set. `lasting`: the
-/// failure is one another attempt cannot mend (no plotter, no xvfb-run).
-std::string runOnce(const QStringList& plotterArgs, bool ownDisplay, bool& lasting) {
-    lasting = true;
+/// How a run went: `why` empty if it drew the plots; `lasting`: a failure another attempt
+/// cannot mend (no plotter, no xvfb-run).
+struct RunOutcome {
+    std::string why;
+    bool lasting = false;
+};
+RunOutcome lastingFailure(std::string why) { return {std::move(why), true}; }
+
+/// One run; `ownDisplay`: under a fresh `xvfb-run -a` even if DISPLAY is set.
+RunOutcome runOnce(const QStringList& plotterArgs, bool ownDisplay) {
     const QString plotter = QCoreApplication::applicationDirPath() + "/resect-plot";
     if (!QFileInfo(plotter).isExecutable())
-        return "the plotter " + plotter.toStdString() + " is not built";
+        return lastingFailure("the plotter " + plotter.toStdString() + " is not built");
     QStringList args = plotterArgs;
     QString program = plotter;
     const char* display = std::getenv("DISPLAY");
     if (ownDisplay || !display || !*display) {
         const QString xvfb = QStandardPaths::findExecutable("xvfb-run");
         if (xvfb.isEmpty())
-            return "no X display (DISPLAY is unset) and no xvfb-run to start one (install xvfb)";
+            return lastingFailure("no X display (DISPLAY is unset) and no xvfb-run to start one (install xvfb)");
         const int from = QRandomGenerator::global()->bounded(kFirstDisplay, kLastDisplay + 1);
         args = QStringList{"-a", "-n", QString::number(from), "-s", kXvfbServerArgs, plotter} + args;
         program = xvfb;
     }
-    lasting = false;
     QProcess p;
     p.setProcessChannelMode(QProcess::ForwardedChannels);
     if (ownDisplay) {
@@ -58,16 +65,16 @@ std::string runOnce(const QStringList& plotterArgs, bool ownDisplay, bool& lasti
     }
     p.start(program, args);
     if (!p.waitForStarted(30000))
-        return "cannot start " + program.toStdString();
+        return {"cannot start " + program.toStdString()};
     if (!p.waitForFinished(kPlotterTimeoutMs)) {
         p.kill();
         p.waitForFinished();
-        return "resect-plot did not finish within 10 minutes";
+        return {"resect-plot did not finish within 10 minutes"};
     }
     if (p.exitStatus() != QProcess::NormalExit)
-        return "resect-plot crashed";
+        return {"resect-plot crashed"};
     if (p.exitCode() != 0)
-        return "resect-plot failed (exit code " + std::to_string(p.exitCode()) + ", see its message above)";
+        return {"resect-plot failed (exit code " + std::to_string(p.exitCode()) + ", see its message above)"};
     return {};
 }
 
@@ -78,11 +85,11 @@ std::string runPlotter(const QStringList& plotterArgs, const char* who) {
     for (int attempt = 0; attempt < kPlotAttempts; ++attempt) {
         // After a failure, a display of our own: the one we were given may be gone (an Xvfb
         // that lost its display number to another started at the same moment).
-        bool lasting = false;
-        why = runOnce(plotterArgs, attempt > 0, lasting);
+        const RunOutcome run = runOnce(plotterArgs, attempt > 0);
+        why = run.why;
         if (why.empty())
             return why;
-        const bool again = !lasting && attempt + 1 < kPlotAttempts;
+        const bool again = !run.lasting && attempt + 1 < kPlotAttempts;
         std::fprintf(stderr, "%s: drawing the plots failed (%s)%s\n", who, why.c_str(), again ? "; trying again" : "");
         if (!again)
             break;

@@ -6,6 +6,7 @@
 #include "core/mesh/quality.h"
 #include "core/mesh/tet_grid.h"
 #include "core/mesh/topology.h"
+#include "core/mesh/validity.h"
 
 #include <Eigen/Cholesky>
 
@@ -1628,23 +1629,6 @@ private:
             for (const auto& e : kTetEdges)
                 longest = std::max(longest, (m.ref(q[e[0]]) - m.ref(q[e[1]])).norm());
         return longest;
-    }
-
-    /// Depth of point x strictly inside the tet with corners c (distance to its nearest face
-    /// plane; exact orient3d decides inside), else 0.
-    static double depthInside(const Vec3& x, const std::array<Vec3, 4>& c) {
-        if (!(orient3d(x, c[1], c[2], c[3]) > 0 && orient3d(c[0], x, c[2], c[3]) > 0 && orient3d(c[0], c[1], x, c[3]) > 0 &&
-              orient3d(c[0], c[1], c[2], x) > 0))
-            return 0;
-        double depth = std::numeric_limits<double>::infinity();
-        for (int i = 0; i < 4; ++i) {
-            const Vec3 &a = c[(i + 1) % 4], &b = c[(i + 2) % 4], &d = c[(i + 3) % 4];
-            const Vec3 n = (b - a).cross(d - a);
-            const double len = n.norm();
-            if (len > 0)
-                depth = std::min(depth, std::abs(n.dot(x - a)) / len);
-        }
-        return std::isfinite(depth) ? depth : 0;
     }
 
     /// Which pairs intrusion() measures: all, those that move with v (v itself, the tets at v),

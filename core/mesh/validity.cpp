@@ -200,6 +200,9 @@ MeshOverlap deepestOverlap(const TetMesh& mesh) {
             continue;
         const Tet& q = mesh.tet(t);
         const std::array<Vec3, 4> c = {mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3])};
+        // (An inverted tet, which checkValidity reports, is measured with two corners swapped.)
+        const std::array<Vec3, 4> positive =
+            orient3d(c[0], c[1], c[2], c[3]) >= 0 ? c : std::array<Vec3, 4>{c[1], c[0], c[2], c[3]};
         const Eigen::Array3i c0 = cells.of(box.min()), c1 = cells.of(box.max());
         for (int z = c0.z(); z <= c1.z(); ++z)
             for (int y = c0.y(); y <= c1.y(); ++y)
@@ -216,22 +219,8 @@ MeshOverlap deepestOverlap(const TetMesh& mesh) {
                             corner = corner || q[i] == n || c[i] == p;
                         if (corner)
                             continue;
-                        // Depth: the distance to the nearest face plane, positive inside. The
-                        // deepest wins; among equals, the lowest node, then the lowest tet.
-                        double depth = std::numeric_limits<double>::infinity();
-                        for (int i = 0; i < 4 && depth >= worst.depth; ++i) {
-                            const Vec3 &a = c[(i + 1) % 4], &b = c[(i + 2) % 4], &d = c[(i + 3) % 4];
-                            Vec3 normal = (b - a).cross(d - a);
-                            const double length = normal.norm();
-                            if (!(length > 0)) {
-                                depth = 0;
-                                break;
-                            }
-                            normal /= length;
-                            if (normal.dot(c[i] - a) < 0)
-                                normal = -normal;  // towards the opposite corner: inside
-                            depth = std::min(depth, normal.dot(p - a));
-                        }
+                        // The deepest wins; among equals, the lowest node, then the lowest tet.
+                        const double depth = depthInside(p, positive);
                         if (depth > worst.depth ||
                             (depth == worst.depth && worst.node >= 0 && (n < worst.node || (n == worst.node && t < worst.tet))))
                             worst = {depth, n, t};
@@ -239,6 +228,21 @@ MeshOverlap deepestOverlap(const TetMesh& mesh) {
                 }
     }
     return worst;
+}
+
+double depthInside(const Vec3& x, const std::array<Vec3, 4>& c) {
+    if (!(orient3d(x, c[1], c[2], c[3]) > 0 && orient3d(c[0], x, c[2], c[3]) > 0 && orient3d(c[0], c[1], x, c[3]) > 0 &&
+          orient3d(c[0], c[1], c[2], x) > 0))
+        return 0;
+    double depth = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 4; ++i) {
+        const Vec3 &a = c[(i + 1) % 4], &b = c[(i + 2) % 4], &d = c[(i + 3) % 4];
+        const Vec3 n = (b - a).cross(d - a);
+        const double len = n.norm();
+        if (len > 0)
+            depth = std::min(depth, std::abs(n.dot(x - a)) / len);
+    }
+    return std::isfinite(depth) ? depth : 0;
 }
 
 } // namespace resect

@@ -3,6 +3,7 @@
 
 #include "core/mesh/tet_mesh.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -42,5 +43,10 @@ struct MeshOverlap {
     int node = -1, tet = -1;
 };
 MeshOverlap deepestOverlap(const TetMesh& mesh);
+
+/// Depth of point x strictly inside the tet with corners c, which must be positively oriented
+/// (orient3d(c) > 0): the distance to its nearest face plane; 0 where x is not strictly inside
+/// (exact orient3d decides). deepestOverlap and the improvement's overlap guard measure with it.
+double depthInside(const Vec3& x, const std::array<Vec3, 4>& c);
 
 } // namespace resect

@@ -1,6 +1,7 @@
 // Tests of the validity check: each kind of problem is caught, valid meshes are clean,
 // and separated (cut) meshes with coincident nodes raise no false alarm.
 #include "core/mesh/box_mesh.h"
+#include "core/mesh/predicates.h"
 #include "core/mesh/validity.h"
 
 #include <QTest>
@@ -188,6 +189,33 @@ private slots:
         bad.setNodePosition(4, Vec3::Constant(std::numeric_limits<double>::quiet_NaN()),
                             Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
         QCOMPARE(deepestOverlap(bad).node, -1);
+    }
+
+    // depthInside: the distance to the nearest face plane strictly inside, 0 on a face, at a
+    // corner and outside (exact decisions: a point rounded onto a face plane is not inside);
+    // deepestOverlap measures an inverted tet too.
+    void depthInsideAtScales_data() { validMeshesAreClean_data(); }
+    void depthInsideAtScales() {
+        QFETCH(double, scale);
+        const std::array<Vec3, 4> t = {a * scale, b * scale, c * scale, d * scale};
+        QVERIFY(orient3d(t[0], t[1], t[2], t[3]) > 0);
+        const Vec3 inside = Vec3(0.2, 0.25, 0.1) * scale;  // nearest: the face abc (z = 0)
+        QVERIFY2(std::abs(depthInside(inside, t) - 0.1 * scale) <= 1e-12 * scale,
+                 qPrintable(QString::number(depthInside(inside, t))));
+        QCOMPARE(depthInside(Vec3(0.2, 0.25, 0) * scale, t), 0.0);        // on abc
+        QCOMPARE(depthInside(Vec3(0.2, 0.25, -1e-300) * scale, t), 0.0);  // just below it
+        QCOMPARE(depthInside(t[3], t), 0.0);                               // a corner
+        QCOMPARE(depthInside(Vec3(2, 2, 2) * scale, t), 0.0);              // outside
+        QVERIFY(depthInside(Vec3(0.2, 0.25, 1e-300) * scale, t) > 0);     // just above abc
+        // An inverted tet holding another tet's node: found as in its positive twin.
+        const TetMesh m = TetMesh::fromArrays({a * scale, c * scale, b * scale, d * scale, inside, b * scale,
+                                               c * scale, e * scale},
+                                              {{0, 1, 2, 3}, {4, 6, 5, 7}});
+        QVERIFY(orient3d(m.ref(0), m.ref(1), m.ref(2), m.ref(3)) < 0);
+        const MeshOverlap o = deepestOverlap(m);
+        QCOMPARE(o.node, 4);
+        QCOMPARE(o.tet, 0);
+        QVERIFY2(std::abs(o.depth - 0.1 * scale) <= 1e-12 * scale, qPrintable(QString::number(o.depth)));
     }
 
     void problemsNameTheElement() {
