@@ -107,6 +107,16 @@ private:
     Status triangulateFace(const TetCut& tc, const std::array<int, 6>& ep, int f,
                            std::vector<SideTri>& out);
     Status cutPolygon(const TetCut& tc, const std::array<int, 6>& ep, std::vector<Tri>& out);
+    /// The current position of the point at reference position `ref` under the tet's map
+    /// (barycentric coordinates in the parent's reference corners, applied to its current ones).
+    Vec3 currentInParent(const Vec3& ref) const {
+        const Vec3 a = m_mesh.ref(m_parent[0]);
+        Eigen::Matrix3d e;
+        e << m_mesh.ref(m_parent[1]) - a, m_mesh.ref(m_parent[2]) - a, m_mesh.ref(m_parent[3]) - a;
+        const Vec3 l = e.fullPivLu().solve(ref - a);
+        const Vec3 p = m_mesh.pos(m_parent[0]);
+        return p + l[0] * (m_mesh.pos(m_parent[1]) - p) + l[1] * (m_mesh.pos(m_parent[2]) - p) + l[2] * (m_mesh.pos(m_parent[3]) - p);
+    }
     /// With avoidCrossing, an apex is only used if none of its new edges crosses the sweep.
     Status cone(const std::vector<SideTri>& tris, std::vector<Tet>& tets, bool avoidCrossing = false);
     bool coneFrom(const std::vector<SideTri>& tris, const Vec3& ref, const Vec3& pos, int node,
@@ -142,6 +152,12 @@ private:
     /// Planes each vertex of the current tet lies on: its four nodes, split points and face
     /// nodes, a dozen at most, so a list.
     std::vector<std::pair<int, std::uint8_t>> m_planes;
+    /// The orientation of the tet being decomposed in the current configuration: 1, or -1
+    /// where the simulation has turned it inside out. Its sub-tets take it too: the current
+    /// positions of every vertex of a cut tet (nodes, split points, face nodes) are the same
+    /// affine map of their reference positions, which keeps or reverses every orientation.
+    int m_currentSign = 1;
+    Tet m_parent{};
     std::vector<int> m_scratch;
     // Buffers reused from tet to tet (a cut decomposes a hundred tets or more).
     std::vector<SideTri> m_faceTris, m_sideTris;
@@ -391,7 +407,7 @@ Status Decomposer::cone(const std::vector<SideTri>& tris, std::vector<Tet>& tets
 
     const auto behind = [&](const Tri& t, const Vec3& cr, const Vec3& cp) {
         return orient3d(m_mesh.ref(t[0]), m_mesh.ref(t[1]), m_mesh.ref(t[2]), cr) < 0 &&
-               orient3d(m_mesh.pos(t[0]), m_mesh.pos(t[1]), m_mesh.pos(t[2]), cp) < 0;
+               m_currentSign * orient3d(m_mesh.pos(t[0]), m_mesh.pos(t[1]), m_mesh.pos(t[2]), cp) < 0;
     };
     const auto contains = [](const Tri& t, int v) { return t[0] == v || t[1] == v || t[2] == v; };
 
@@ -491,8 +507,11 @@ Status Decomposer::cone(const std::vector<SideTri>& tris, std::vector<Tet>& tets
             std::vector<Tri> faces;
             for (const SideTri& t : tris)
                 faces.push_back(t.v);
-            const bool found = kernelPoint(faces, [&](int v) -> const Vec3& { return m_mesh.ref(v); }, ref) &&
-                               kernelPoint(faces, [&](int v) -> const Vec3& { return m_mesh.pos(v); }, pos);
+            bool found = kernelPoint(faces, [&](int v) -> const Vec3& { return m_mesh.ref(v); }, ref);
+            if (found && m_currentSign > 0)
+                found = kernelPoint(faces, [&](int v) -> const Vec3& { return m_mesh.pos(v); }, pos);
+            else if (found)
+                pos = currentInParent(ref);  // (the kernel's image: the faces face the other way there)
             if (!found || !seesAll(ref, pos))
                 return Status::error("a cut polyhedron cannot be split into positive tets");
         }
@@ -514,7 +533,7 @@ bool Decomposer::coneFrom(const std::vector<SideTri>& tris, const Vec3& ref, con
             continue;
         if ((node >= 0 && onPlaneOf(node, st)) ||
             !(orient3d(m_mesh.ref(t[0]), m_mesh.ref(t[1]), m_mesh.ref(t[2]), ref) < 0 &&
-              orient3d(m_mesh.pos(t[0]), m_mesh.pos(t[1]), m_mesh.pos(t[2]), pos) < 0))
+              m_currentSign * orient3d(m_mesh.pos(t[0]), m_mesh.pos(t[1]), m_mesh.pos(t[2]), pos) < 0))
             return false;
         if (minRadiusRatio > 0 &&
             radiusRatio(m_mesh.ref(t[0]), m_mesh.ref(t[2]), m_mesh.ref(t[1]), ref) < minRadiusRatio)
@@ -534,6 +553,11 @@ bool Decomposer::coneFrom(const std::vector<SideTri>& tris, const Vec3& ref, con
 
 Status Decomposer::decompose(const TetCut& tc) {
     const Tet parent = m_mesh.tet(tc.tet);
+    m_parent = parent;
+    const int current = orient3d(m_mesh.pos(parent[0]), m_mesh.pos(parent[1]), m_mesh.pos(parent[2]), m_mesh.pos(parent[3]));
+    if (current == 0)
+        return Status::error("tet " + std::to_string(tc.tet) + " is flat in the current configuration");
+    m_currentSign = current > 0 ? 1 : -1;
     if (tc.scheme == Scheme::Z || tc.scheme == Scheme::Touch) {
         int side = 0;
         for (int i = 0; i < 4 && side == 0; ++i)

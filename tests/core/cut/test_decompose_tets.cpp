@@ -21,12 +21,16 @@ namespace {
 
 /// Planar sweep c + s u + r w for s in [s0, s1] on curve 0 (r = r0) and [s2, s3] on curve 1
 /// (r = r1), n segments per curve: a trapezoid in the plane, or a square.
+/// The current configuration of the inverted-tet cases: x -> -x of the reference (a mirror
+/// turns every tet inside out). Sweeps live in the current configuration, so theirs too.
+Vec3 g_mirror = Vec3::Ones();
+
 SweepSurface quadSweep(const Vec3& c, const Vec3& u, const Vec3& w, double s0, double s1, double r0,
                        double r1, double s2, double s3) {
     std::vector<Vec3> a, b;
     for (int j = 0; j <= 4; ++j) {
-        a.push_back(c + r0 * w + (s0 + (s1 - s0) * j / 4) * u);
-        b.push_back(c + r1 * w + (s2 + (s3 - s2) * j / 4) * u);
+        a.push_back((c + r0 * w + (s0 + (s1 - s0) * j / 4) * u).cwiseProduct(g_mirror));
+        b.push_back((c + r1 * w + (s2 + (s3 - s2) * j / 4) * u).cwiseProduct(g_mirror));
     }
     SweepSurface s;
     const Status st = SweepSurface::fromStartEnd(a, b, s);
@@ -265,6 +269,60 @@ private slots:
         if (faces == Faces::PlainSymmetric &&
             (scheme == Scheme::A || scheme == Scheme::B || scheme == Scheme::X))
             QVERIFY(d.faceNodes > 0); // every face prism of a complete cut gets its node
+    }
+
+    void invertedInTheCurrentConfiguration_data() { eachScheme_data(); }
+    void invertedInTheCurrentConfiguration() {
+        // The simulation can turn a tet inside out before a cut reaches it (a 1 mm femur
+        // pulled about by the loop: a side of a cut tet then had no kernel in the current
+        // configuration, "a cut polyhedron cannot be split into positive tets", and the cut
+        // failed). The current configuration here is the mirror image of the reference one:
+        // the cut still decomposes, every sub-tet positive in the reference configuration and
+        // inside out in the current one, like its parent, and both volumes add up.
+        QFETCH(Scheme, scheme);
+        QFETCH(Faces, faces);
+        TetMesh mesh = unitTet();
+        g_mirror = Vec3(-1, 1, 1);
+        SchemeCase k = schemeCase(scheme);
+        g_mirror = Vec3::Ones();
+        k.n = k.n.cwiseProduct(Vec3(-1, 1, 1));  // (the same plane values at mirrored points)
+        for (int v = 0; v < 4; ++v)
+            mesh.positions()[v] = mesh.ref(v).cwiseProduct(Vec3(-1, 1, 1));
+        QCOMPARE(orient3d(mesh.pos(0), mesh.pos(1), mesh.pos(2), mesh.pos(3)), -1);
+        const CutSelection sel = literalSelection(mesh, k, scheme);
+        Decomposition d;
+        CutChanges changes;
+        changes.firstNewNode = mesh.nodeCount();
+        changes.firstNewTet = mesh.tetCount();
+        const Status st = decomposeTets(mesh, sel, decomposeOptions(faces, k.sweep), d, changes);
+        QVERIFY2(st.ok(), st.message().c_str());
+        double reference = 0, current = 0;
+        for (int t = 0; t < mesh.tetCount(); ++t) {
+            const Tet& q = mesh.tet(t);
+            QVERIFY2(orient3d(mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3])) > 0, qPrintable(QString::number(t)));
+            QVERIFY2(orient3d(mesh.pos(q[0]), mesh.pos(q[1]), mesh.pos(q[2]), mesh.pos(q[3])) < 0, qPrintable(QString::number(t)));
+            reference += mesh.referenceVolume(t);
+            current += mesh.currentVolume(t);
+        }
+        QVERIFY2(std::abs(reference - 1.0 / 6.0) <= 1e-15, qPrintable(QString::number(reference, 'g', 17)));
+        QVERIFY2(std::abs(current + 1.0 / 6.0) <= 1e-15, qPrintable(QString::number(current, 'g', 17)));
+        // Every vertex's current position is the mirror of its reference one.
+        for (int v = 0; v < mesh.nodeCount(); ++v)
+            QVERIFY2((mesh.pos(v) - mesh.ref(v).cwiseProduct(Vec3(-1, 1, 1))).norm() <= 1e-15, qPrintable(QString::number(v)));
+    }
+
+    void flatInTheCurrentConfiguration() {
+        // A tet the simulation has flattened cannot be cut into tets of either orientation:
+        // the cut is refused with a message naming it.
+        TetMesh mesh = unitTet();
+        mesh.positions()[3] = Vec3(0.2, 0.3, 0);  // in the plane of the other three
+        const SchemeCase k = schemeCase(Scheme::A);
+        const CutSelection sel = literalSelection(mesh, k, Scheme::A);
+        Decomposition d;
+        CutChanges changes;
+        const Status st = decomposeTets(mesh, sel, decomposeOptions(Faces::Enhanced, k.sweep), d, changes);
+        QVERIFY(!st.ok());
+        QVERIFY2(st.message().find("tet 0 is flat in the current configuration") != std::string::npos, st.message().c_str());
     }
 
     void splitPointsFollowEq1InTheDeformedConfiguration() {

@@ -4,6 +4,7 @@
 // running simulation) bit-identical to one that never saw it; copies cut identically; a tissue
 // that moved is cut where it is now.
 #include "core/mesh/masses.h"
+#include "core/mesh/predicates.h"
 #include "core/mesher/samples.h"
 #include "core/mesher/tetrahedralize.h"
 #include "core/sim/fixed_nodes_effect.h"
@@ -314,6 +315,35 @@ private slots:
         QCOMPARE(moved.tets.crossedEdges, created.tets.crossedEdges);
         QCOMPARE(moved.tets.addedTets, created.tets.addedTets);
         QCOMPARE(tissue.pieces().count, 2);
+    }
+
+    void aTissueTurnedInsideOutIsCut() {
+        // The simulation can turn tets inside out (a 1 mm femur pulled about by the loop had
+        // one where the 8th of 20 pulls arrived, and that cut failed: "a cut polyhedron
+        // cannot be split into positive tets"). Here every tet is: the current configuration
+        // is the reference one mirrored (x -> -x). A plane across the stalk still cuts the
+        // tissue in two, with its embedded surface, every tet positive in the reference
+        // configuration and inside out in the current one, and the volume kept.
+        const Inputs& in = polyp(1);
+        TetMesh mirrored = in.mesh;
+        for (int v = 0; v < mirrored.nodeCount(); ++v)
+            mirrored.positions()[v] = mirrored.ref(v).cwiseProduct(Vec3(-1, 1, 1));
+        Tissue tissue;
+        QVERIFY(Tissue::create(mirrored, in.surface, Material{}, baseAnchors(1), tissue).ok());
+        const double volume = tissue.mesh().totalReferenceVolume();
+        TissueCut cut;
+        const Status s = tissue.cut(planeAt(10, 1), CutOptions{}, &cut);
+        QVERIFY2(s.ok(), s.message().c_str());
+        QVERIFY(cut.tets.crossedEdges > 0);
+        QVERIFY(cut.tets.addedTets > 0);
+        QCOMPARE(tissue.pieces().count, 2);
+        const TetMesh& m = tissue.mesh();
+        for (int t = 0; t < m.tetCount(); ++t) {
+            const Tet& q = m.tet(t);
+            QVERIFY(orient3d(m.ref(q[0]), m.ref(q[1]), m.ref(q[2]), m.ref(q[3])) > 0);
+            QVERIFY2(orient3d(m.pos(q[0]), m.pos(q[1]), m.pos(q[2]), m.pos(q[3])) < 0, qPrintable(QString::number(t)));
+        }
+        QVERIFY(std::abs(m.totalReferenceVolume() - volume) <= 1e-12 * volume);
     }
 
     void resectedPiecesLeaveTheTissue_data() {
