@@ -107,16 +107,6 @@ private:
     Status triangulateFace(const TetCut& tc, const std::array<int, 6>& ep, int f,
                            std::vector<SideTri>& out);
     Status cutPolygon(const TetCut& tc, const std::array<int, 6>& ep, std::vector<Tri>& out);
-    /// The current position of the point at reference position `ref` under the tet's map
-    /// (barycentric coordinates in the parent's reference corners, applied to its current ones).
-    Vec3 currentInParent(const Vec3& ref) const {
-        const Vec3 a = m_mesh.ref(m_parent[0]);
-        Eigen::Matrix3d e;
-        e << m_mesh.ref(m_parent[1]) - a, m_mesh.ref(m_parent[2]) - a, m_mesh.ref(m_parent[3]) - a;
-        const Vec3 l = e.fullPivLu().solve(ref - a);
-        const Vec3 p = m_mesh.pos(m_parent[0]);
-        return p + l[0] * (m_mesh.pos(m_parent[1]) - p) + l[1] * (m_mesh.pos(m_parent[2]) - p) + l[2] * (m_mesh.pos(m_parent[3]) - p);
-    }
     /// With avoidCrossing, an apex is only used if none of its new edges crosses the sweep.
     Status cone(const std::vector<SideTri>& tris, std::vector<Tet>& tets, bool avoidCrossing = false);
     bool coneFrom(const std::vector<SideTri>& tris, const Vec3& ref, const Vec3& pos, int node,
@@ -511,7 +501,7 @@ Status Decomposer::cone(const std::vector<SideTri>& tris, std::vector<Tet>& tets
             if (found && m_currentSign > 0)
                 found = kernelPoint(faces, [&](int v) -> const Vec3& { return m_mesh.pos(v); }, pos);
             else if (found)
-                pos = currentInParent(ref);  // (the kernel's image: the faces face the other way there)
+                pos = currentInTet(m_mesh, m_parent, ref);  // (the kernel's image: the faces face the other way there)
             if (!found || !seesAll(ref, pos))
                 return Status::error("a cut polyhedron cannot be split into positive tets");
         }
@@ -553,11 +543,6 @@ bool Decomposer::coneFrom(const std::vector<SideTri>& tris, const Vec3& ref, con
 
 Status Decomposer::decompose(const TetCut& tc) {
     const Tet parent = m_mesh.tet(tc.tet);
-    m_parent = parent;
-    const int current = orient3d(m_mesh.pos(parent[0]), m_mesh.pos(parent[1]), m_mesh.pos(parent[2]), m_mesh.pos(parent[3]));
-    if (current == 0)
-        return Status::error("tet " + std::to_string(tc.tet) + " is flat in the current configuration");
-    m_currentSign = current > 0 ? 1 : -1;
     if (tc.scheme == Scheme::Z || tc.scheme == Scheme::Touch) {
         int side = 0;
         for (int i = 0; i < 4 && side == 0; ++i)
@@ -565,6 +550,11 @@ Status Decomposer::decompose(const TetCut& tc) {
         m_out.tetSide[tc.tet] = static_cast<std::int8_t>(side);
         return Status::success();
     }
+    m_parent = parent;
+    const int current = orient3d(m_mesh.pos(parent[0]), m_mesh.pos(parent[1]), m_mesh.pos(parent[2]), m_mesh.pos(parent[3]));
+    if (current == 0)
+        return Status::error("tet " + std::to_string(tc.tet) + " is flat in the current configuration");
+    m_currentSign = current > 0 ? 1 : -1;
     std::array<int, 6> ep;
     for (int e = 0; e < 6; ++e) {
         ep[e] = -1;

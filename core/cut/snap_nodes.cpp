@@ -21,6 +21,12 @@ Vec3 referenceInTet(const TetMesh& mesh, const Tet& q, const Vec3& pos) {
            l[2] * (mesh.ref(q[3]) - mesh.ref(q[0]));
 }
 
+Vec3 currentInTet(const TetMesh& mesh, const Tet& q, const Vec3& ref) {
+    const Vec3 l = tetCoordinates(ref, mesh.ref(q[0]), mesh.ref(q[1]), mesh.ref(q[2]), mesh.ref(q[3]));
+    return mesh.pos(q[0]) + l[0] * (mesh.pos(q[1]) - mesh.pos(q[0])) + l[1] * (mesh.pos(q[2]) - mesh.pos(q[0])) +
+           l[2] * (mesh.pos(q[3]) - mesh.pos(q[0]));
+}
+
 namespace {
 
 /// Of the tets offered in turn, the one containing `pos` best (largest smallest barycentric

@@ -48,6 +48,10 @@ Vec3 referenceFromDeformedIn(const TetMesh& mesh, std::span<const int> incidentT
 /// The same mapping for a point in one tet.
 Vec3 referenceInTet(const TetMesh& mesh, const Tet& tet, const Vec3& pos);
 
+/// The other way: the current position of the point at reference position `ref` under the
+/// tet's map (barycentric coordinates in its reference corners, applied to its current ones).
+Vec3 currentInTet(const TetMesh& mesh, const Tet& tet, const Vec3& ref);
+
 /// (l1, l2, l3) with x = p0 + l1 (p1 - p0) + l2 (p2 - p0) + l3 (p3 - p0); the fourth
 /// barycentric coordinate is 1 - l1 - l2 - l3. Non-finite for a flat tet.
 inline Vec3 tetCoordinates(const Vec3& x, const Vec3& p0, const Vec3& p1, const Vec3& p2,

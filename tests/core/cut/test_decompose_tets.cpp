@@ -323,6 +323,15 @@ private slots:
         const Status st = decomposeTets(mesh, sel, decomposeOptions(Faces::Enhanced, k.sweep), d, changes);
         QVERIFY(!st.ok());
         QVERIFY2(st.message().find("tet 0 is flat in the current configuration") != std::string::npos, st.message().c_str());
+        // A tet the cut only touches (scheme Z: detached, not decomposed) is taken as it is.
+        TetMesh touched = unitTet();
+        touched.positions()[3] = Vec3(0.2, 0.3, 0);
+        const SchemeCase z = schemeCase(Scheme::Z);
+        const CutSelection zSel = literalSelection(touched, z, Scheme::Z);
+        Decomposition zd;
+        CutChanges zChanges;
+        QVERIFY(decomposeTets(touched, zSel, decomposeOptions(Faces::Enhanced, z.sweep), zd, zChanges).ok());
+        QCOMPARE(touched.tetCount(), 1);
     }
 
     void splitPointsFollowEq1InTheDeformedConfiguration() {
