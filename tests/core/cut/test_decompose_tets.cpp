@@ -156,6 +156,22 @@ DecomposeOptions decomposeOptions(Faces faces, const SweepSurface& sweep) {
     return o;
 }
 
+/// The case's literal selection decomposed on `mesh` (steps 3 and 4), with what step 4 reports.
+struct Decomposed {
+    CutSelection selection;
+    Decomposition d;
+    CutChanges changes;
+    Status status;
+};
+Decomposed decomposeCase(TetMesh& mesh, const SchemeCase& k, Scheme scheme, Faces faces) {
+    Decomposed r;
+    r.selection = literalSelection(mesh, k, scheme);
+    r.changes.firstNewNode = mesh.nodeCount();
+    r.changes.firstNewTet = mesh.tetCount();
+    r.status = decomposeTets(mesh, r.selection, decomposeOptions(faces, k.sweep), r.d, r.changes);
+    return r;
+}
+
 } // namespace
 
 Q_DECLARE_METATYPE(resect::Scheme)
@@ -188,14 +204,12 @@ private slots:
         QFETCH(int, standardTets);
         TetMesh mesh = unitTet();
         const SchemeCase k = schemeCase(scheme);
-        const CutSelection sel = literalSelection(mesh, k, scheme);
+        const Decomposed r = decomposeCase(mesh, k, scheme, faces);
+        const CutSelection& sel = r.selection;
         const TetCut tc = sel.tets[0];
-        Decomposition d;
-        CutChanges changes;
-        changes.firstNewNode = mesh.nodeCount();
-        changes.firstNewTet = mesh.tetCount();
-        const Status st = decomposeTets(mesh, sel, decomposeOptions(faces, k.sweep), d, changes);
-        QVERIFY2(st.ok(), st.message().c_str());
+        const Decomposition& d = r.d;
+        const CutChanges& changes = r.changes;
+        QVERIFY2(r.status.ok(), r.status.message().c_str());
 
         // Split points: one per cut edge, Eq. 1 (here the configurations coincide).
         QCOMPARE(int(d.edgePoint.size()), int(sel.cutEdges.size()));
@@ -289,13 +303,8 @@ private slots:
         for (int v = 0; v < 4; ++v)
             mesh.positions()[v] = mesh.ref(v).cwiseProduct(Vec3(-1, 1, 1));
         QCOMPARE(orient3d(mesh.pos(0), mesh.pos(1), mesh.pos(2), mesh.pos(3)), -1);
-        const CutSelection sel = literalSelection(mesh, k, scheme);
-        Decomposition d;
-        CutChanges changes;
-        changes.firstNewNode = mesh.nodeCount();
-        changes.firstNewTet = mesh.tetCount();
-        const Status st = decomposeTets(mesh, sel, decomposeOptions(faces, k.sweep), d, changes);
-        QVERIFY2(st.ok(), st.message().c_str());
+        const Decomposed r = decomposeCase(mesh, k, scheme, faces);
+        QVERIFY2(r.status.ok(), r.status.message().c_str());
         double reference = 0, current = 0;
         for (int t = 0; t < mesh.tetCount(); ++t) {
             const Tet& q = mesh.tet(t);
