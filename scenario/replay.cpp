@@ -121,8 +121,11 @@ public:
     /// span with the tool moving along it, after which the tool is withdrawn.
     Status stroke(const ReplayStroke& stroke) {
         TissueCut cut;
-        if (Status s = m_tissue.cut(stroke.sweep, m_plan.cut, &cut); !s.ok())
-            return Status::error(stroke.name + ": " + s.message());
+        if (Status s = m_tissue.cut(stroke.sweep, m_plan.cut, &cut); !s.ok()) {
+            // (A failed cut leaves the tissue as it was: the outcome so far is reported.)
+            m_out.cutFailure = stroke.name + ": " + s.message();
+            return Status::success();
+        }
         m_out.cutTotals += cut.tets;
         m_out.surfaceCapTriangles += cut.surface.surface.capTriangles;
         if (cut.simulationRebuilt) {
@@ -226,11 +229,15 @@ Status replay(ReplayPlan plan, ReplayOutcome& out, const ReplayProgress& progres
     ReplayRun run(plan, out, progress);
     if (Status s = run.start(); !s.ok())
         return s;
-    for (const ReplayStroke& stroke : plan.strokes)
+    for (const ReplayStroke& stroke : plan.strokes) {
         if (Status s = run.stroke(stroke); !s.ok())
             return s;
-    if (Status s = run.simulate(plan.duration, {}); !s.ok())
-        return s;
+        if (!out.cutFailure.empty())
+            break;
+    }
+    if (out.cutFailure.empty())
+        if (Status s = run.simulate(plan.duration, {}); !s.ok())
+            return s;
     run.finish();
     return Status::success();
 }

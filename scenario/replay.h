@@ -80,6 +80,9 @@ struct ReplayOutcome {
     double maxSpeed = 0;
     double kineticInitial = 0, kineticMax = 0, kineticFinal = 0;
     std::string failure;       ///< why the simulation stopped early (empty if it did not)
+    /// The stroke whose cut failed, and why (empty if every cut succeeded). The replay stops
+    /// there: the outcome is the tissue as it was before that cut.
+    std::string cutFailure;
     CutStats cutTotals;        ///< summed over the strokes (times included)
     int surfaceCapTriangles = 0;
     std::vector<EffectTime> effectTimes;  ///< ms per effect over the whole run

@@ -24,7 +24,12 @@ Integrator integratorOf(const std::string& name) {
 } // namespace
 
 bool ScenarioRun::allPassed() const {
-    return std::all_of(expectations.begin(), expectations.end(), [](const ExpectationResult& e) { return e.passed; });
+    return cutsSucceeded() &&
+           std::all_of(expectations.begin(), expectations.end(), [](const ExpectationResult& e) { return e.passed; });
+}
+
+bool ScenarioRun::cutsSucceeded() const {
+    return std::all_of(tissues.begin(), tissues.end(), [](const TissueRun& t) { return t.outcome.cutFailure.empty(); });
 }
 
 Status loadTissue(const Scenario& scenario, const TissueSpec& tissue, TetMesh& mesh,
@@ -244,6 +249,7 @@ QJsonObject scenarioRunJson(const ScenarioRun& run) {
             {"max_speed", o.maxSpeed},
             {"kinetic_energy", QJsonObject{{"initial", o.kineticInitial}, {"max", o.kineticMax}, {"final", o.kineticFinal}}},
             {"failure", QString::fromStdString(o.failure)},
+            {"cut_failure", QString::fromStdString(o.cutFailure)},
             {"cut", QJsonObject{{"cut_edges", o.cutTotals.cutEdges},
                                 {"cut_nodes", o.cutTotals.cutNodes},
                                 {"decomposed_tets", o.cutTotals.decomposedTets},

@@ -33,7 +33,10 @@ struct TissueRun {
 struct ScenarioRun {
     std::vector<TissueRun> tissues;
     std::vector<ExpectationResult> expectations;
+    /// Every expectation passed and every cut succeeded.
     bool allPassed() const;
+    /// No tissue's replay stopped at a failed cut (ReplayOutcome::cutFailure).
+    bool cutsSucceeded() const;
 };
 
 /// Builds the replay plan of one tissue: loads or meshes it (masses from its material),

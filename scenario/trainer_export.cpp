@@ -221,6 +221,8 @@ void exportPackage(const Scenario& scenario, const std::string& out, const Expor
             fail(ExportFailure::Cancelled, "cancelled");
         if (!replayed.ok())
             fail(ExportFailure::Internal, "tissue '" + tissue.name + "': " + replayed.message());
+        if (!t.outcome.cutFailure.empty())  // (the expert's result would lack that cut and the rest)
+            fail(ExportFailure::Internal, "tissue '" + tissue.name + "': " + t.outcome.cutFailure);
         progress.step(from + 0.95 * span, "writing-result:" + tissue.name);
         require(writeVtu((root / "result" / (name + ".vtu")).string(), t.outcome.mesh));
         if (!t.outcome.surface.triangles.empty())

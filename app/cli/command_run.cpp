@@ -65,6 +65,9 @@ int runRun(Args args) {
                     o.minRadiusRatio, o.steps, o.dt, o.finite ? "" : " (diverged)");
         if (!o.failure.empty())
             std::printf("  %s\n", o.failure.c_str());
+        if (!o.cutFailure.empty())
+            std::fprintf(stderr, "resect run: tissue '%s': %s (the replay stopped there; the report shows the tissue before that cut)\n",
+                         t.name.c_str(), o.cutFailure.c_str());
     }
     for (const ExpectationResult& e : run.expectations)
         std::printf("%s %s (%s): %.6g, expected %.6g\n", e.passed ? "PASS" : "FAIL", e.kind.c_str(), e.tissue.c_str(),
@@ -74,6 +77,8 @@ int runRun(Args args) {
         r["scenario"] = QString::fromStdString(files[0]);
         requireOk(writeJson(*report, r));
     }
+    if (!run.cutsSucceeded())
+        return kInternal;  // (like a diverged `simulate`: the report is still written)
     return run.allPassed() ? kOk : kExpectationFailed;
 }
 

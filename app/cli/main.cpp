@@ -51,7 +51,8 @@ commands:
                                     the paper's Table 1 on the built-in samples
   run SCENARIO.json [--report R.json]
                                     replay the scenario's strokes, cuts and simulation and
-                                    check its expectations (exit 3 if one fails)
+                                    check its expectations (exit 3 if one fails; exit 1 if
+                                    a cut fails: the replay stops there, report still written)
   export SCENARIO.json --out DIR [--force]
                                     a self-contained trainer package (meshes, glTF surfaces,
                                     the expert's result, manifest with SHA-256)

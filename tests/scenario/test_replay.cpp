@@ -3,12 +3,15 @@
 // counts pieces and the resected volume; two runs give the same state; progress can cancel;
 // plans needing too many steps are refused.
 #include "scenario/replay.h"
+#include "scenario/scenario_run.h"
 
 #include "core/mesh/box_mesh.h"
 #include "core/mesh/masses.h"
 
 #include "core/cut/improve_mesh.h"
 
+#include <QJsonArray>
+#include <QJsonObject>
 #include <QTest>
 
 using namespace resect;
@@ -130,6 +133,39 @@ private slots:
         QVERIFY(monotone);
         QVERIFY(!s.ok());
         QVERIFY2(s.message().find("cancelled") != std::string::npos, s.message().c_str());
+    }
+
+    void aFailedCutIsReportedAndTheReplayStops() {
+        // A cut that fails (here refused: d far out of range) ends the replay at that stroke,
+        // with the tissue as it was: the outcome is kept and says which stroke and why, so
+        // that `resect run` still writes its report (and exits 1), and the run has not passed.
+        ReplayPlan plan = boxPlan(false);
+        plan.strokes.push_back(plan.strokes.front());
+        plan.strokes.back().name = "strokes[1]";
+        plan.cut.d = 1e9;
+        const int tets = plan.mesh.tetCount();
+        TissueRun t;
+        t.name = "box";
+        const Status s = replay(std::move(plan), t.outcome);
+        QVERIFY2(s.ok(), s.message().c_str());
+        const ReplayOutcome& out = t.outcome;
+        QVERIFY2(out.cutFailure.rfind("strokes[0]: ", 0) == 0, out.cutFailure.c_str());
+        QVERIFY2(out.cutFailure.find("d (a fraction of the mean edge length)") != std::string::npos, out.cutFailure.c_str());
+        QCOMPARE(out.mesh.tetCount(), tets);
+        QCOMPARE(out.steps, 0LL);  // (no simulation after the failed cut, nor the plan's duration)
+        QCOMPARE(out.pieces, 1);
+        QVERIFY(out.failure.empty());
+        ScenarioRun run;
+        run.tissues.push_back(std::move(t));
+        QVERIFY(!run.cutsSucceeded());
+        QVERIFY(!run.allPassed());
+        const QJsonObject json = scenarioRunJson(run);
+        QCOMPARE(json["passed"].toBool(), false);
+        QVERIFY(json["tissues"].toArray()[0].toObject()["cut_failure"].toString().startsWith("strokes[0]: "));
+        // And a replay whose cuts all succeed has none.
+        ReplayOutcome ok;
+        QVERIFY(replay(boxPlan(false), ok).ok());
+        QVERIFY(ok.cutFailure.empty());
     }
 
     void tooManyStepsAreRefused() {
