@@ -1,7 +1,8 @@
 // A whole resection keeps the tissue healthy (issue 16): 20 random intersecting loop scoops
 // (with a few mouse-like strokes among them) through Tissue::cut at the defaults, the tissue
 // anchored at its base and resected pieces removed, on the polyp, the myoma and a box, at
-// scales 1e-3, 1 and 1e3. After every pass, the remaining tissue:
+// scales 1e-3, 1 and 1e3, and on the six scanned-style surfaces of resources/corpus (meshed as
+// the product meshes them, in their own units). After every pass, the remaining tissue:
 //  - has a worst radius ratio at least 0.5 times the input's and a shortest edge at least 0.3
 //    times the input's;
 //  - has fewer than 2 times the input's tets;
@@ -21,6 +22,7 @@
 #include "core/mesher/samples.h"
 #include "core/mesher/tetrahedralize.h"
 #include "core/sweep/stroke_shapes.h"
+#include "scenario/anatomy.h"
 #include "core/cut/improve_mesh.h"
 #include "core/tissue/tissue.h"
 
@@ -81,6 +83,13 @@ const TetMesh& body(const QString& name, double scale) {
     TetMesh mesh;
     if (name == "box") {
         mesh = makeBoxTetMesh(Vec3::Zero(), Vec3(10, 10, 10) * scale, 6, 6, 6);
+    } else if (name.endsWith(".obj") || name.endsWith(".stl") || name.endsWith(".off")) {
+        // A surface of the scanned-style corpus (issue 18), loaded and meshed as the product
+        // does (`resect mesh`, the studio), in its own units.
+        TriangleSurface surface;
+        const std::string path = RESECT_SOURCE_DIR "/resources/corpus/" + name.toStdString();
+        if (!loadAnatomy(path, surface).ok() || !meshAnatomy(surface, AnatomyMeshing{}, mesh).ok())
+            qFatal("meshing %s failed", qPrintable(name));
     } else {
         TriangleSurface surface = sampleSurface(name == "polyp" ? Sample::Polyp : Sample::Myoma, 0.25);
         for (Vec3& p : surface.positions)
@@ -119,6 +128,10 @@ private slots:
             QTest::newRow(qPrintable(QString("box, scale %1").arg(scale))) << QString("box") << scale << 7u << 0.5 << 0.3;
         for (unsigned seed : {11u, 12u})
             QTest::newRow(qPrintable(QString("box, seed %1").arg(seed))) << QString("box") << 1.0 << seed << 0.5 << 0.3;
+        // The scanned-style corpus: noise, creases, terraces, graded and sliver triangles, in
+        // metres, millimetres and micrometres (resources/corpus/README.md).
+        for (const char* file : {"kidney.off", "polyp.stl", "liver_lobe.obj", "femur_head.stl", "myoma.off", "prostate.obj"})
+            QTest::newRow(file) << QString(file) << 1.0 << 7u << 0.5 << 0.3;
     }
     void twentyScoops() {
         QFETCH(QString, mesh);
@@ -193,7 +206,8 @@ private:
         const std::shared_ptr<const BodySurface> body = BodySurface::fromBoundary(input);
         const double outsideBound = 1e-9 * meanEdge;
         double deviation = 0, outside = 0, offBody = 0, overlap = 0;
-        int cuts = 0, chips = 0;
+        int cuts = 0, chips = 0, mostTets = tets0;
+        double leastRatio = 1e300, leastEdge = 1e300;  // (times the input's, over the passes)
         for (int k = 0; k < 20; ++k) {
             SweepSurface sweep;
             QString what;
@@ -220,6 +234,9 @@ private:
             const QString at = what + QString(" (%1 tets, %2 chips)").arg(m.tetCount()).arg(tissue.chips().size());
             // Quality bounds.
             const double ratio = summarizeQuality(m).minRadiusRatio, edge = shortestEdge(m);
+            leastRatio = std::min(leastRatio, ratio / ratio0);
+            leastEdge = std::min(leastEdge, edge / edge0);
+            mostTets = std::max(mostTets, m.tetCount());
             QVERIFY2(ratio >= ratioBound * ratio0, qPrintable(at + QString(": worst ratio %1, input %2").arg(ratio).arg(ratio0)));
             QVERIFY2(edge >= edgeBound * edge0, qPrintable(at + QString(": shortest edge %1, input %2").arg(edge).arg(edge0)));
             QVERIFY2(m.tetCount() < 2 * tets0, qPrintable(at + QString(": input had %1").arg(tets0)));
@@ -291,6 +308,8 @@ private:
         }
         qInfo("%s: largest boundary deviation %.3g mean edges; outside the body %.3g, body nodes off it %.3g; overlap %.3g", qPrintable(mesh),
               deviation / meanEdge, std::max(outside, 0.0) / meanEdge, std::max(offBody, 0.0) / meanEdge, overlap / meanEdge);
+        qInfo("%s: %d tets at the most (input %d); least worst ratio %.3g x the input's (%.3g), least shortest edge %.3g x; %d chips",
+              qPrintable(mesh), mostTets, tets0, leastRatio, ratio0, leastEdge, chips);
         QVERIFY(cuts >= 18);
         QVERIFY2(chips >= 5, qPrintable(QString("only %1 chips").arg(chips)));
     }
