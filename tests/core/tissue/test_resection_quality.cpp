@@ -159,6 +159,16 @@ private slots:
         // rim nodes across a concave stretch of the body's surface, 0.022 mean edges outside
         // the body (pass 15; Pass::trySplit now refuses such a point).
         QTest::newRow("polyp, seed 15") << QString("polyp") << 15u << 0.5 << 0.3;
+        // The scanned-style corpus with strokes, seeds 7 and 8: 9 of the 12 rows hold every
+        // bound, asserted here. Not asserted: polyp.stl seed 8 (a cut at pass 10 puts a split
+        // point 0.042 mean edges outside the body, on a boundary edge that is a chord across a
+        // concave stretch of the noisy surface, before snapping, relaxation or improvement),
+        // myoma.off seed 7 and prostate.obj seed 8 (overlap 0.047 and 0.060 mean edges at pass
+        // 15; README, "Crack walls").
+        for (const auto& [file, seed] : std::initializer_list<std::pair<const char*, unsigned>>{
+                 {"kidney.off", 7}, {"kidney.off", 8}, {"polyp.stl", 7}, {"liver_lobe.obj", 7}, {"liver_lobe.obj", 8},
+                 {"femur_head.stl", 7}, {"femur_head.stl", 8}, {"myoma.off", 8}, {"prostate.obj", 7}})
+            QTest::newRow(qPrintable(QString("%1, seed %2").arg(file).arg(seed))) << QString(file) << seed << 0.5 << 0.3;
     }
     void mouseStrokesAmongScoops() {
         QFETCH(QString, mesh);
