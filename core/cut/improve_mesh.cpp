@@ -1487,18 +1487,14 @@ private:
             if (const std::optional<Vec3> better = bestPosition(v, children, worstAtMid))
                 x = *better;
             const double worstAfter = worstAround(children, v, x);
+            Vec3 pos = m.pos(v), vel = m.velocities()[v];
+            mapToCurrent(old, x, pos, vel);
             // Nor may the new node lie outside the body. The midpoint of a chord between two
             // nodes of a cut's rim can, where the body's surface between them is concave, and
             // bestPosition checks where it moves the node, not where it starts (polyp, stroke
             // rows' seed 15, pass 15: 0.022 mean edges outside).
-            if (o.body && leavesBody(x, x, false, length(order[k]))) {
-                m.removeNode(v);
-                cutMarkOf.erase(v);
-                continue;
-            }
-            Vec3 pos = m.pos(v), vel = m.velocities()[v];
-            mapToCurrent(old, x, pos, vel);
-            if (!(worstAfter > worstBefore + kSplitGain && allPositive(children, v, x) && allPositive(children, v, pos, true))) {
+            if (!(worstAfter > worstBefore + kSplitGain && allPositive(children, v, x) && allPositive(children, v, pos, true)) ||
+                leavesBody(x, x, false, length(order[k]))) {
                 m.removeNode(v);  // the last node, in no tet yet
                 cutMarkOf.erase(v);
                 continue;

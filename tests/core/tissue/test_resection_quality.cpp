@@ -22,9 +22,9 @@
 #include "core/mesher/samples.h"
 #include "core/mesher/tetrahedralize.h"
 #include "core/sweep/stroke_shapes.h"
-#include "scenario/anatomy.h"
 #include "core/cut/improve_mesh.h"
 #include "core/tissue/tissue.h"
+#include "scenario/anatomy.h"
 
 #include <QTest>
 
