@@ -325,21 +325,13 @@ private slots:
         // the cut is refused with a message naming it.
         TetMesh mesh = unitTet();
         mesh.positions()[3] = Vec3(0.2, 0.3, 0);  // in the plane of the other three
-        const SchemeCase k = schemeCase(Scheme::A);
-        const CutSelection sel = literalSelection(mesh, k, Scheme::A);
-        Decomposition d;
-        CutChanges changes;
-        const Status st = decomposeTets(mesh, sel, decomposeOptions(Faces::Enhanced, k.sweep), d, changes);
+        const Status st = decomposeCase(mesh, schemeCase(Scheme::A), Scheme::A, Faces::Enhanced).status;
         QVERIFY(!st.ok());
         QVERIFY2(st.message().find("tet 0 is flat in the current configuration") != std::string::npos, st.message().c_str());
         // A tet the cut only touches (scheme Z: detached, not decomposed) is taken as it is.
         TetMesh touched = unitTet();
         touched.positions()[3] = Vec3(0.2, 0.3, 0);
-        const SchemeCase z = schemeCase(Scheme::Z);
-        const CutSelection zSel = literalSelection(touched, z, Scheme::Z);
-        Decomposition zd;
-        CutChanges zChanges;
-        QVERIFY(decomposeTets(touched, zSel, decomposeOptions(Faces::Enhanced, z.sweep), zd, zChanges).ok());
+        QVERIFY(decomposeCase(touched, schemeCase(Scheme::Z), Scheme::Z, Faces::Enhanced).status.ok());
         QCOMPARE(touched.tetCount(), 1);
     }
 
