@@ -1,6 +1,7 @@
 #include "core/embed/triangulate_cut.h"
 
 #include "core/embed/flat_marks.h"
+#include "core/mesh/union_find.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -35,8 +36,18 @@ std::uint64_t directedKey(int a, int b) {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
 }
 
-/// The loops with their points merged where (u, v) are equal: distinct points, and every loop
-/// edge between distinct points by their indices (loop vertex of its start and end).
+/// Points of the loops closer than this in u and in v are one point. Coincident points of the
+/// cut (the two walls of an earlier cut, where the surface's vertices were placed through
+/// different tets after a simulation step) differ by rounding, a few 1e-15; the constrained
+/// triangulation would treat them as two points with a sliver between them, inside or outside
+/// the region by rounding (a blobby scan, pull 4 of 20: a slit of an earlier cut crossed,
+/// 3e-15 apart, left the surface open). (u, v) is in [0, 1]^2: 1e-11 is far above rounding
+/// and far below any feature of a cut.
+constexpr double kSamePointUv = 1e-11;
+
+/// The loops with their points merged where (u, v) are equal to within kSamePointUv: distinct
+/// points, and every loop edge between distinct points by their indices (loop vertex of its
+/// start and end).
 struct MergedLoops {
     std::vector<Vec2> points;       ///< distinct (u, v)
     std::vector<int> distinctOf;    ///< per input point used by a loop: its distinct point
@@ -47,9 +58,9 @@ struct MergedLoops {
 MergedLoops merge(const std::vector<Vec2>& points, const std::vector<std::vector<int>>& loops) {
     MergedLoops m;
     m.distinctOf.assign(points.size(), -1);
-    // The loops' points in order of first use, then sorted by (u, v) (ties: first use first), so
-    // that equal points are neighbours; each run of equal points is one distinct point, numbered
-    // in order of first use.
+    // The loops' points in order of first use, then sorted by u; points within kSamePointUv of
+    // each other (in u and v, transitively) are one distinct point, at the (u, v) of the first
+    // used, numbered in order of first use.
     std::vector<int> used;
     for (const auto& loop : loops)
         for (int i : loop)
@@ -59,22 +70,31 @@ MergedLoops merge(const std::vector<Vec2>& points, const std::vector<std::vector
             }
     std::vector<int> order(used.size());
     std::iota(order.begin(), order.end(), 0);
-    const auto same = [&](int a, int b) {
-        return points[used[a]].x() == points[used[b]].x() && points[used[a]].y() == points[used[b]].y();
-    };
     std::sort(order.begin(), order.end(), [&](int a, int b) {
         const Vec2 &p = points[used[a]], &q = points[used[b]];
         return p.x() != q.x() ? p.x() < q.x() : p.y() != q.y() ? p.y() < q.y() : a < b;
     });
-    std::vector<int> leader(used.size());  // per used point: the first-used point equal to it
-    for (std::size_t k = 0; k < order.size(); ++k)
-        leader[order[k]] = k > 0 && same(order[k], order[k - 1]) ? leader[order[k - 1]] : order[k];
+    UnionFind same;
+    same.reset(static_cast<int>(used.size()));
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        const Vec2& p = points[used[order[k]]];
+        for (std::size_t j = k; j-- > 0;) {
+            const Vec2& q = points[used[order[j]]];
+            if (p.x() - q.x() > kSamePointUv)
+                break;
+            if (std::abs(p.y() - q.y()) <= kSamePointUv)
+                same.unite(order[k], order[j]);
+        }
+    }
+    std::vector<int> leader(used.size(), -1);  // per cluster root: its first-used point
     for (std::size_t j = 0; j < used.size(); ++j) {
-        if (leader[j] == static_cast<int>(j)) {
+        int& first = leader[same.find(static_cast<int>(j))];
+        if (first < 0) {
+            first = static_cast<int>(j);
             m.distinctOf[used[j]] = static_cast<int>(m.points.size());
             m.points.push_back(points[used[j]]);
         } else {
-            m.distinctOf[used[j]] = m.distinctOf[used[leader[j]]];
+            m.distinctOf[used[j]] = m.distinctOf[used[first]];
         }
     }
     for (const auto& loop : loops)

@@ -15,16 +15,24 @@
 //    it; a chord of a partial cut's caps lying on a surface edge;
 //  - "the cut boundary has no side to close" and "a cut-boundary vertex has no copy on the
 //    other side": the pieces of a flat triangle next to the end of a partial cut taking their
-//    side from beyond the end.
+//    side from beyond the end;
+//  - a surface left open (16 border edges) with no error, then "the cut boundary is open" at a
+//    later cut: a cut across the walls of an earlier cut whose copies were 1e-16 to 3e-15 apart
+//    (placed through different tets after simulation steps), on a scanned surface (literal
+//    data in tests/data/cut_surface) and on its cap's (u, v) alone.
 // After every cut the surface must be closed and 2-manifold, the pieces' volumes must add up to
 // the volume before, and cut faces must carry their (u, v).
 #include "core/embed/cut_surface.h"
+#include "core/embed/triangulate_cut.h"
 #include "core/mesher/procedural_surfaces.h"
 #include "surface_checks.h"
 
 #include <QTest>
 
 #include <cmath>
+#include <fstream>
+#include <map>
+#include <string>
 
 using namespace resect;
 
@@ -102,9 +110,6 @@ int pieceCount(const TriangleSurface& s) {
 class TestCutSurfaceRegressions : public QObject {
     Q_OBJECT
 private slots:
-    /// A tetrahedron (four large triangles) and a sweep bent like a loop scoop: the cut inside
-    /// each face curves far from the chord between its ends, and in (u, v) those chords
-    /// crossed ("cut boundary crosses itself in the parameter plane").
     void curvedCutAcrossLargeTriangles() {
         TriangleSurface s;
         s.positions = {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {0, 0, 10}};
@@ -274,6 +279,69 @@ private slots:
         const SurfaceCut cut = cutAndCheck(s, sweep);
         QVERIFY(cut.capTriangles > 0);
         QCOMPARE(pieceCount(s), 1);  // a slit, not a separation
+    }
+    void capAroundASlitApartByRounding() {
+        // The (u, v) of the failing cap: a slit of an earlier cut, its two walls' points 1e-16
+        // to 3e-15 apart, inside the cap of a cut through the whole body (here a square). The
+        // triangulation took the two walls' points for two, put a sliver between them inside
+        // the cap and a triangle outside a loop edge; avoiding surface edges then flipped that
+        // loop edge away.
+        const std::vector<Vec2> points{
+            {0.80765620303236219, 0.31236647011489477}, {0.80512220345138197, 0.30841975320385911},
+            {0.76472073881695102, 0.25}, {0.80453213888433162, 0.21534543229334763},
+            {0.80746015647676717, 0.21259696681225659}, {0.80453213888433139, 0.21534543229334954},
+            {0.76472073881695157, 0.25}, {0.80512220345138186, 0.30841975320385634},
+            {0.6, 0.1}, {0.95, 0.1}, {0.95, 0.45}, {0.6, 0.45}};
+        const std::vector<std::vector<int>> loops{{0, 1, 2, 3, 4, 5, 6, 7}, {8, 9, 10, 11}};
+        std::vector<std::array<int, 3>> triangles;
+        QVERIFY(triangulateCap(points, loops, 1, triangles).ok());
+        std::map<std::pair<int, int>, int> directed;
+        for (const auto& t : triangles)
+            for (int e = 0; e < 3; ++e)
+                ++directed[{t[e], t[(e + 1) % 3]}];
+        for (const auto& loop : loops)
+            for (std::size_t k = 0; k < loop.size(); ++k) {
+                const int a = loop[k], b = loop[(k + 1) % loop.size()];
+                const int inside = directed[std::pair{a, b}], outside = directed[std::pair{b, a}];
+                QVERIFY2(inside == 1, qPrintable(QString("loop edge %1 -> %2 bounds %3 triangles").arg(a).arg(b).arg(inside)));
+                QVERIFY2(outside == 0, qPrintable(QString("a triangle lies outside loop edge %1 -> %2").arg(a).arg(b)));
+            }
+    }
+    // The surface behind the test above, as it was: a scanned blob's embedded surface before the
+    // fourth of 20 random loop pulls, and that pull's sweep (tests/data/cut_surface). The cut
+    // reported success and left 16 border edges; the eleventh pull then failed.
+    void realSurfaceAcrossASlitApartByRounding() {
+        const QString dir = QString(RESECT_SOURCE_DIR) + "/tests/data/cut_surface/";
+        TriangleSurface s;
+        {
+            std::ifstream in((dir + "blobby-pull4-surface.off").toStdString());
+            std::string head;
+            int vertices = 0, triangles = 0, edges = 0;
+            QVERIFY(in >> head >> vertices >> triangles >> edges);
+            QCOMPARE(QString::fromStdString(head), QString("OFF"));
+            s.positions.resize(vertices);
+            for (Vec3& p : s.positions)
+                QVERIFY(in >> p.x() >> p.y() >> p.z());
+            s.triangles.resize(triangles);
+            for (Tri& t : s.triangles) {
+                int corners = 0;
+                QVERIFY(in >> corners >> t[0] >> t[1] >> t[2]);
+                QCOMPARE(corners, 3);
+            }
+        }
+        std::vector<std::vector<Vec3>> curves;
+        {
+            std::ifstream in((dir + "blobby-pull4-sweep.txt").toStdString());
+            int count = 0, points = 0;
+            QVERIFY(in >> count >> points);
+            curves.assign(count, std::vector<Vec3>(points));
+            for (auto& curve : curves)
+                for (Vec3& p : curve)
+                    QVERIFY(in >> p.x() >> p.y() >> p.z());
+        }
+        QVERIFY(testing::manifoldProblems(s).isEmpty());
+        const SurfaceCut cut = cutAndCheck(s, sweepOf(curves));
+        QVERIFY(cut.loops >= 3);
     }
 };
 
