@@ -7,8 +7,11 @@ simulation are the polyp scenario's, the loop is 0.3 times the body's smaller wi
 pulls are 0.05 s apart. For trying `resect run` on surfaces the code was not written around
 (README, "Crack walls": the inverted tets this found on CGAL's femur).
 
-    python3 tools/make_random_pulls.py SURFACE.(off|obj|stl) SEED OUT.json
+    python3 tools/make_random_pulls.py SURFACE.(off|obj|stl) SEED OUT.json [--partial]
     resect run OUT.json --report REPORT.json
+
+With --partial every second pull stops inside the body, 30-70 % of the way across: it leaves a
+crack whose two walls stay in the tissue, as a mouse stroke cut partway in does.
 
 Only the surface's vertices are read (OFF, OBJ, ASCII or binary STL), for its bounding box;
 `resect run` reads the surface itself.
@@ -33,9 +36,11 @@ def vertices(path):
     sys.exit("make_random_pulls: %s: OFF, OBJ or STL expected" % path)
 
 def main():
-    if len(sys.argv) != 4:
+    args = [a for a in sys.argv[1:] if a != "--partial"]
+    partial = "--partial" in sys.argv[1:]
+    if len(args) != 3:
         sys.exit(__doc__)
-    surface, seed, out = os.path.abspath(sys.argv[1]), int(sys.argv[2]), sys.argv[3]
+    surface, seed, out = os.path.abspath(args[0]), int(args[1]), args[2]
     pts = vertices(surface)
     lo = [min(p[k] for p in pts) for k in range(3)]
     hi = [max(p[k] for p in pts) for k in range(3)]
@@ -43,7 +48,8 @@ def main():
     here = os.path.dirname(os.path.abspath(__file__))
     with open(os.path.join(here, "..", "resources", "scenarios", "polyp-resection.json")) as f:
         scenario = json.load(f)
-    scenario["metadata"]["title"] = "%s: 20 random loop pulls (seed %d)" % (os.path.basename(surface), seed)
+    scenario["metadata"]["title"] = "%s: 20 random loop pulls%s (seed %d)" % (
+        os.path.basename(surface), ", every second partway" if partial else "", seed)
     scenario["metadata"]["description"] = "Written by tools/make_random_pulls.py."
     tissue = scenario["tissues"][0]
     tissue["name"] = "body"
@@ -58,10 +64,11 @@ def main():
     for s in range(20):
         height = hi[2] - rng.uniform(0.0, 0.5) * size[2]
         offset = rng.uniform(-0.3, 0.3) * size[0]
+        reach = 1.2 if not (partial and s % 2 == 1) else rng.uniform(0.4, 0.8)
         poses = []
         for i in range(5):
             p = [centre[0] + offset + rng.uniform(-0.03, 0.03) * size[0],
-                 lo[1] - 0.1 * size[1] + i / 4 * 1.2 * size[1],
+                 lo[1] - 0.1 * size[1] + i / 4 * reach * size[1],
                  height + rng.uniform(-0.01, 0.01) * size[2]]
             tilt = rng.uniform(-0.15, 0.15)
             poses.append({"t": round(0.05 * s + 0.01 * i, 4), "position": p,

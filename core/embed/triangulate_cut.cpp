@@ -253,7 +253,10 @@ void triangulateByEars(const std::vector<Vec2>& P, std::vector<std::vector<int>>
 }
 
 /// True if every loop edge a -> b is an edge of exactly one triangle, as a -> b (side +1: the
-/// counter-clockwise triangle on its left) or b -> a (side -1).
+/// counter-clockwise triangle on its left) or b -> a (side -1), and of none on its other side
+/// (unless that is a loop edge too). Where two walls of an earlier cut cross each other in the
+/// (u, v) image (the simulation moved them apart, one bulging across the other), the windings
+/// count some of the region twice and a loop edge between them lies inside it.
 bool coversLoops(const std::vector<std::array<int, 3>>& triangles, const std::vector<std::vector<int>>& loops,
                  int side) {
     EdgeTable count;
@@ -262,10 +265,18 @@ bool coversLoops(const std::vector<std::array<int, 3>>& triangles, const std::ve
         for (int e = 0; e < 3; ++e)
             if (++*count.insert(directedKey(t[e], t[(e + 1) % 3]), 0).first > 1)
                 return false;  // two triangles on one side of an edge: not a disc
+    EdgeTable boundary;  // the loop edges, as the region's triangles have them
     for (const auto& loop : loops)
         for (std::size_t k = 0; k < loop.size(); ++k) {
             const int a = loop[k], b = loop[(k + 1) % loop.size()];
-            if (count.get(side > 0 ? directedKey(a, b) : directedKey(b, a)) != 1)
+            boundary.insert(side > 0 ? directedKey(a, b) : directedKey(b, a), 1);
+        }
+    for (const auto& loop : loops)
+        for (std::size_t k = 0; k < loop.size(); ++k) {
+            const int a = loop[k], b = loop[(k + 1) % loop.size()];
+            const std::uint64_t in = side > 0 ? directedKey(a, b) : directedKey(b, a);
+            const std::uint64_t out = side > 0 ? directedKey(b, a) : directedKey(a, b);
+            if (count.get(in) != 1 || (count.get(out) != 0 && boundary.get(out) == 0))
                 return false;
         }
     return true;
