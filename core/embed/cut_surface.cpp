@@ -13,6 +13,7 @@
 #include <map>
 #include <numeric>
 #include <span>
+#include <string>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -295,6 +296,8 @@ public:
             return s;
         if (Status s = closeCaps(loops); !s.ok())
             return s;
+        if (Status s = checkClosedAlongCut(); !s.ok())
+            return s;
         finishCounts();
         m_edit.committed = true;
         if (m_index) {
@@ -302,6 +305,41 @@ public:
             for (const auto& [t, old] : m_edit.replaced)
                 replaced.push_back(t);
             m_index->followCut(m_s, m_first, m_edit.triangles, replaced);
+        }
+        return Status::success();
+    }
+
+    /// The surface is still closed and 2-manifold along what the cut changed: every directed edge
+    /// of a changed or added triangle is in no other of them, and its opposite is in one of them
+    /// or in a triangle the cut left alone (which had it before: then the edge is one the changed
+    /// triangles had before too, and its opposite none of them had). In proportion to the cut. A
+    /// cut that fails it is refused (and undone) instead of leaving holes in the surface.
+    Status checkClosedAlongCut() const {
+        std::unordered_set<int> changed;
+        for (const auto& [t, old] : m_edit.replaced)
+            changed.insert(t);
+        for (int t = m_edit.triangles; t < m_s.triangleCount(); ++t)
+            changed.insert(t);
+        std::unordered_map<std::uint64_t, int> now;
+        for (int t : changed) {
+            const Tri& q = m_s.triangles[t];
+            for (int e = 0; e < 3; ++e)
+                ++now[directed(q[e], q[(e + 1) % 3])];
+        }
+        std::unordered_set<std::uint64_t> before;
+        std::unordered_set<int> original;
+        for (const auto& [t, old] : m_edit.replaced)
+            if (original.insert(t).second)  // (the first entry of a triangle holds its corners before the cut)
+                for (int e = 0; e < 3; ++e)
+                    before.insert(directed(old[e], old[(e + 1) % 3]));
+        for (const auto& [key, count] : now) {
+            const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+            const std::uint64_t reverse = directed(b, a);
+            if (count == 1 && (now.count(reverse) || (before.count(key) && !before.count(reverse))))
+                continue;
+            return Status::error("the cut would leave the surface " +
+                                 std::string(count == 1 ? "open" : "non-manifold") + " at its edge (" +
+                                 std::to_string(a) + ", " + std::to_string(b) + "); refused");
         }
         return Status::success();
     }
