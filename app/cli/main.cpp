@@ -87,7 +87,9 @@ by OUT's extension in its default format, or in --mesh-format KEY: vtu, msh41 (.
 default), msh41-binary, msh22, msh22-binary, vtk (binary, .vtk default), vtk-ascii,
 medit, tetgen. An unknown extension is refused before any work.
 
-exit codes: 0 success, 2 bad input, 1 internal failure
+exit codes: 0 success, 2 bad input, 1 internal failure (also: simulate diverged; run: a
+cut failed, the report still written), 3 run: an expectation failed (stays_finite for a
+divergence)
 )";
 
 } // namespace
