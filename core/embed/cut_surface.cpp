@@ -238,6 +238,8 @@ struct SurfaceEdit {
 struct SurfaceCutWorkspace::Tables {
     StampedMarks onSweep, cutVertices, shared, mate, mateOf, side, colour, incident, next, visited;
     EdgeTable tested, splits, cutEdges, segmentTriangle, edgeSide, halfEdges, surfaceEdges, byEdge, capEdges;
+    EdgeTable checkNow, checkBefore, checkSeen;  ///< checkClosedAlongCut
+    std::vector<std::uint64_t> checkKeys;
     void clear(int vertices, int triangles) {
         for (StampedMarks* m : {&onSweep, &cutVertices, &shared, &mate, &mateOf, &incident, &next, &visited}) {
             m->clear();
@@ -248,7 +250,7 @@ struct SurfaceCutWorkspace::Tables {
             m->grow(triangles);
         }
         for (EdgeTable* t : {&tested, &splits, &cutEdges, &segmentTriangle, &edgeSide, &halfEdges, &surfaceEdges, &byEdge,
-                             &capEdges})
+                             &capEdges, &checkNow, &checkBefore, &checkSeen})
             t->clear();
     }
     /// Room for a cut near `candidates` triangles (one allocation each on a cold workspace).
@@ -314,32 +316,46 @@ public:
     /// or in a triangle the cut left alone (which had it before: then the edge is one the changed
     /// triangles had before too, and its opposite none of them had). In proportion to the cut. A
     /// cut that fails it is refused (and undone) instead of leaving holes in the surface.
-    Status checkClosedAlongCut() const {
-        std::unordered_set<int> changed;
-        for (const auto& [t, old] : m_edit.replaced)
-            changed.insert(t);
-        for (int t = m_edit.triangles; t < m_s.triangleCount(); ++t)
-            changed.insert(t);
-        std::unordered_map<std::uint64_t, int> now;
-        for (int t : changed) {
+    Status checkClosedAlongCut() {
+        EdgeTable &now = m_t.checkNow, &before = m_t.checkBefore, &seen = m_t.checkSeen;
+        std::vector<std::uint64_t>& keys = m_t.checkKeys;
+        now.clear();
+        before.clear();
+        seen.clear();
+        keys.clear();
+        const int added = m_s.triangleCount() - m_edit.triangles, replaced = static_cast<int>(m_edit.replaced.size());
+        now.reserve(3 * (added + replaced));
+        before.reserve(3 * replaced);
+        seen.reserve(replaced);
+        keys.reserve(3 * (added + replaced));
+        const auto count = [&](int t) {
             const Tri& q = m_s.triangles[t];
-            for (int e = 0; e < 3; ++e)
-                ++now[directed(q[e], q[(e + 1) % 3])];
-        }
-        std::unordered_set<std::uint64_t> before;
-        std::unordered_set<int> original;
+            for (int e = 0; e < 3; ++e) {
+                const std::uint64_t key = directed(q[e], q[(e + 1) % 3]);
+                const auto [value, added] = now.insert(key, 0);
+                ++*value;
+                if (added)
+                    keys.push_back(key);
+            }
+        };
+        // Triangles the surface had before (their first entry holds their corners then), then
+        // the added ones (replaced or not).
         for (const auto& [t, old] : m_edit.replaced)
-            if (original.insert(t).second)  // (the first entry of a triangle holds its corners before the cut)
+            if (t < m_edit.triangles && seen.insert(static_cast<std::uint64_t>(t) + 1, 1).second) {
+                count(t);
                 for (int e = 0; e < 3; ++e)
-                    before.insert(directed(old[e], old[(e + 1) % 3]));
-        for (const auto& [key, count] : now) {
+                    before.insert(directed(old[e], old[(e + 1) % 3]), 1);
+            }
+        for (int t = m_edit.triangles; t < m_s.triangleCount(); ++t)
+            count(t);
+        for (std::uint64_t key : keys) {
             const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
             const std::uint64_t reverse = directed(b, a);
-            if (count == 1 && (now.count(reverse) || (before.count(key) && !before.count(reverse))))
+            const int times = now.get(key);
+            if (times == 1 && (now.contains(reverse) || (before.contains(key) && !before.contains(reverse))))
                 continue;
-            return Status::error("the cut would leave the surface " +
-                                 std::string(count == 1 ? "open" : "non-manifold") + " at its edge (" +
-                                 std::to_string(a) + ", " + std::to_string(b) + "); refused");
+            return Status::error("the cut would leave the surface " + std::string(times == 1 ? "open" : "non-manifold") +
+                                 " at its edge (" + std::to_string(a) + ", " + std::to_string(b) + "); refused");
         }
         return Status::success();
     }
