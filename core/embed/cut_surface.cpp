@@ -332,9 +332,9 @@ public:
             const Tri& q = m_s.triangles[t];
             for (int e = 0; e < 3; ++e) {
                 const std::uint64_t key = directed(q[e], q[(e + 1) % 3]);
-                const auto [value, added] = now.insert(key, 0);
+                const auto [value, first] = now.insert(key, 0);
                 ++*value;
-                if (added)
+                if (first)
                     keys.push_back(key);
             }
         };
