@@ -13,17 +13,18 @@ pulls are 0.05 s apart. For trying `resect run` on surfaces the code was not wri
 With --partial every second pull stops inside the body, 30-70 % of the way across: it leaves a
 crack whose two walls stay in the tissue, as a mouse stroke cut partway in does.
 
-Only the surface's vertices are read (OFF, OBJ, ASCII or binary STL), for its bounding box;
+Only the surface's vertices are read (OFF or COFF, OBJ, ASCII or binary STL), for its bounding box;
 `resect run` reads the surface itself.
 """
 import json, math, os, random, struct, sys
 
+sys.dont_write_bytecode = True  # (no __pycache__ beside the tools)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from scale_surface import read_off  # noqa: E402 (the one OFF reader of the tools)
+
 def vertices(path):
     if path.endswith(".off"):
-        tok = open(path).read().split()
-        n = int(tok[1])
-        v = list(map(float, tok[4:4 + 3 * n]))
-        return [v[3 * i:3 * i + 3] for i in range(n)]
+        return read_off(path)[0]
     if path.endswith(".obj"):
         return [list(map(float, l.split()[1:4])) for l in open(path) if l.startswith("v ")]
     if path.endswith(".stl"):

@@ -10,12 +10,10 @@ were.
 """
 import sys
 
-def main():
-    if len(sys.argv) not in (3, 4):
-        sys.exit(__doc__)
-    source, out = sys.argv[1], sys.argv[2]
-    size = float(sys.argv[3]) if len(sys.argv) == 4 else 30.0
-    lines = [l.split("#")[0].strip() for l in open(source)]
+def read_off(path):
+    """The vertices (x, y, z lists) and faces (token lists: count, then indices) of an OFF or
+    COFF file; vertex colours and comments are dropped."""
+    lines = [l.split("#")[0].strip() for l in open(path)]
     lines = [l for l in lines if l]
     first = 0
     while not lines[first][0].isdigit() and not lines[first][0] == "-":
@@ -33,6 +31,15 @@ def main():
     for l in body[vertices:vertices + faces]:
         t = l.split()
         polygons.append(t[:1 + int(t[0])])
+    return points, polygons
+
+def main():
+    if len(sys.argv) not in (3, 4):
+        sys.exit(__doc__)
+    source, out = sys.argv[1], sys.argv[2]
+    size = float(sys.argv[3]) if len(sys.argv) == 4 else 30.0
+    points, polygons = read_off(source)
+    vertices, faces = len(points), len(polygons)
     lo = [min(p[k] for p in points) for k in range(3)]
     hi = [max(p[k] for p in points) for k in range(3)]
     scale = size / max(hi[k] - lo[k] for k in range(3))
