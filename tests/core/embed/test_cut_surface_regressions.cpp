@@ -135,6 +135,9 @@ int pieceCount(const TriangleSurface& s) {
 class TestCutSurfaceRegressions : public QObject {
     Q_OBJECT
 private slots:
+    /// A tetrahedron (four large triangles) and a sweep bent like a loop scoop: the cut inside
+    /// each face curves far from the chord between its ends, and in (u, v) those chords
+    /// crossed ("cut boundary crosses itself in the parameter plane").
     void curvedCutAcrossLargeTriangles() {
         TriangleSurface s;
         s.positions = {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {0, 0, 10}};
