@@ -1556,6 +1556,51 @@ private:
         std::vector<std::array<Vec3, 4>> corners;
         std::vector<Eigen::AlignedBox3d> boxes;
         std::vector<int> nodes;
+        /// A dense grid over `box`: per cell the tets (indices into `tets`) whose box reaches
+        /// into it and the nodes in it, so that intrusion() looks at what is near each point
+        /// and tet only (it looked at all of them: a third of a small mesh each time).
+        static constexpr int kCells = 8;
+        std::vector<std::vector<int>> tetsIn, nodesIn;
+        std::array<int, 3> cellOf(const Vec3& x) const {
+            std::array<int, 3> c{};
+            for (int d = 0; d < 3; ++d) {
+                const double extent = box.max()[d] - box.min()[d];
+                const int i = extent > 0 ? static_cast<int>(std::floor((x[d] - box.min()[d]) / extent * kCells)) : 0;
+                c[d] = std::clamp(i, 0, kCells - 1);
+            }
+            return c;
+        }
+        static int index(int i, int j, int k) { return (i * kCells + j) * kCells + k; }
+        void index(const std::vector<Vec3>& nodePositions) {
+            tetsIn.assign(kCells * kCells * kCells, {});
+            nodesIn.assign(kCells * kCells * kCells, {});
+            for (std::size_t t = 0; t < boxes.size(); ++t) {
+                const auto lo = cellOf(boxes[t].min()), hi = cellOf(boxes[t].max());
+                for (int i = lo[0]; i <= hi[0]; ++i)
+                    for (int j = lo[1]; j <= hi[1]; ++j)
+                        for (int k = lo[2]; k <= hi[2]; ++k)
+                            tetsIn[index(i, j, k)].push_back(static_cast<int>(t));
+            }
+            for (std::size_t u = 0; u < nodes.size(); ++u) {
+                const auto c = cellOf(nodePositions[u]);
+                nodesIn[index(c[0], c[1], c[2])].push_back(nodes[u]);
+            }
+        }
+        /// The tets whose box may contain x (x in `box`; each once).
+        const std::vector<int>& tetsAt(const Vec3& x) const {
+            const auto c = cellOf(x);
+            return tetsIn[index(c[0], c[1], c[2])];
+        }
+        /// Calls f for every node that may lie in `b` (each once).
+        template <class F>
+        void forEachNodeIn(const Eigen::AlignedBox3d& b, F f) const {
+            const auto lo = cellOf(b.min()), hi = cellOf(b.max());
+            for (int i = lo[0]; i <= hi[0]; ++i)
+                for (int j = lo[1]; j <= hi[1]; ++j)
+                    for (int k = lo[2]; k <= hi[2]; ++k)
+                        for (int u : nodesIn[index(i, j, k)])
+                            f(u);
+        }
     };
     Nearby nearby(const std::vector<Tet>& star, int v, double margin) const {
         Eigen::AlignedBox3d refBox, posBox;
@@ -1570,13 +1615,23 @@ private:
         Nearby n;
         n.box = padded(refBox, margin);
         // The candidates that reach into the box and that the star does not replace, each
-        // perhaps more than once (then sorted: the pass costs what its region does, whatever
-        // the mesh's size).
+        // once: per tet slot, the call that last took it (kept per thread across passes, so that
+        // it grows with the mesh once, not at every pass; sorting the hits instead cost a third
+        // of the pass where many walls are not glued).
         std::vector<int> hits;
         const auto [ga, gb] = guardEdge;
+        thread_local std::vector<unsigned> stamp;
+        thread_local unsigned call = 0;
+        if (stamp.size() < static_cast<std::size_t>(m.tetCount()))
+            stamp.resize(static_cast<std::size_t>(m.tetCount()) * 5 / 4 + 64, 0);
+        if (++call == 0) {  // (wrapped around: no slot may keep an old stamp)
+            std::fill(stamp.begin(), stamp.end(), 0);
+            call = 1;
+        }
         const auto consider = [&](int t) {
-            if (t < 0 || t >= m.tetCount())
+            if (t < 0 || t >= m.tetCount() || stamp[t] == call)
                 return;
+            stamp[t] = call;
             const Tet& q = m.tet(t);
             if (contains(q, v) || (ga >= 0 && contains(q, ga) && (gb < 0 || contains(q, gb))))
                 return;
@@ -1607,8 +1662,6 @@ private:
             for (int u : nodes)
                 tetsAt(u);
         }
-        std::sort(hits.begin(), hits.end());
-        hits.erase(std::unique(hits.begin(), hits.end()), hits.end());
         for (int t : hits) {
             const Tet& q = m.tet(t);
             n.tets.push_back(q);
@@ -1623,6 +1676,11 @@ private:
         }
         std::sort(n.nodes.begin(), n.nodes.end());
         n.nodes.erase(std::unique(n.nodes.begin(), n.nodes.end()), n.nodes.end());
+        std::vector<Vec3> at;
+        at.reserve(n.nodes.size());
+        for (int u : n.nodes)
+            at.push_back(m.ref(u));
+        n.index(at);
         return n;
     }
     static bool contains(const Tet& q, int u) { return u >= 0 && std::find(q.begin(), q.end(), u) != q.end(); }
@@ -1655,9 +1713,17 @@ private:
         for (int u : starNodes) {
             if (!measured(u == v))
                 continue;
-            for (std::size_t i = 0; i < near.tets.size(); ++i)
+            const auto inside = [&](int i) {
                 if (near.boxes[i].contains(at(u)) && !contains(near.tets[i], u))
                     deepest = std::max(deepest, depthInside(at(u), near.corners[i]));
+            };
+            if (near.box.contains(at(u))) {
+                for (int i : near.tetsAt(at(u)))
+                    inside(i);
+            } else {  // (the grid covers `box` only)
+                for (std::size_t i = 0; i < near.tets.size(); ++i)
+                    inside(static_cast<int>(i));
+            }
         }
         for (const Tet& q : star) {
             if (!measured(contains(q, v)))
@@ -1666,9 +1732,10 @@ private:
             Eigen::AlignedBox3d box;
             for (const Vec3& x : c)
                 box.extend(x);
-            for (int u : near.nodes)
+            near.forEachNodeIn(box, [&](int u) {
                 if (u != v && u != gone && !contains(q, u) && box.contains(m.ref(u)))
                     deepest = std::max(deepest, depthInside(m.ref(u), c));
+            });
             for (int u : starNodes)
                 if (u != v && !contains(q, u) && box.contains(at(u)))
                     deepest = std::max(deepest, depthInside(at(u), c));
