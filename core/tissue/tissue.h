@@ -190,7 +190,9 @@ private:
     void resect(TissueCut& result, std::vector<int>& seeds, bool& rebuild);
     /// Step 7 of cut(): one improvement pass around `seeds`. Returns the nodes of the tets it
     /// left below its bound (empty if there are none or it changed nothing), for another.
-    std::vector<int> improve(TissueCut& result, const std::vector<int>& seeds, const CutOptions& options, bool& rebuild);
+    /// `tetsBeforeCut`: the tissue's tets before the cut (for the tet budget).
+    std::vector<int> improve(TissueCut& result, const std::vector<int>& seeds, const CutOptions& options, int tetsBeforeCut,
+                             bool& rebuild);
     /// Anchors, schemes, cut marks, the spatial index and the pieces follow a renumbering of
     /// the tets and nodes (old -> new, -1: gone).
     void renumber(const std::vector<int>& newTet, const std::vector<int>& newNode);
@@ -221,6 +223,7 @@ private:
     int m_restingCut = -1;
     RestingSurface m_resting;
     double m_inputWorstRatio = 0, m_inputShortestEdge = 0;  ///< of the tissue as created
+    int m_inputTets = 0;  ///< tets of the tissue as created
     /// The body's surface as created (the improvement keeps every node in the body and the
     /// nodes of the body's surface on it); shared by copies: it never changes.
     std::shared_ptr<const BodySurface> m_body;

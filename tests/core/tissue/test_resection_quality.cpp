@@ -178,6 +178,72 @@ private slots:
         run(mesh, 1.0, seed, true, ratioBound, edgeBound);
     }
 
+    // Twenty mouse-like strokes and nothing else, each a little deeper: every one leaves its
+    // crack in the tissue (nothing is resected), so the mesh is refined around twenty cracks
+    // that cross each other. The tet budget (Tissue: coarsening reaches further beyond 1.6
+    // times the input's tets) keeps the mesh under 2 times the input's: the polyp's seed 7
+    // reached 2.03 times at pass 6 without it (1.97 at the most with it). Volume, mass and
+    // validity hold after every pass. Not asserted, because not met: the quality bounds.
+    // Measured (least worst ratio over the passes, times the input's): polyp 0.95 / 0.32 / 0.69,
+    // myoma 0.25 / 0.25 / 0.52 (seeds 7 / 8 / 9); the lattice box, not run here (its improvement
+    // takes seconds a cut, most of it in the overlap guard), 0.003-0.02 (issue 16's note).
+    void partialStrokesOnly_data() {
+        QTest::addColumn<QString>("mesh");
+        QTest::addColumn<unsigned>("seed");
+        for (const char* mesh : {"polyp", "myoma"})
+            for (unsigned seed : {7u, 8u, 9u})
+                QTest::newRow(qPrintable(QString("%1, seed %2").arg(mesh).arg(seed))) << QString(mesh) << seed;
+    }
+    void partialStrokesOnly() {
+        QFETCH(QString, mesh);
+        QFETCH(unsigned, seed);
+        TetMesh input = body(mesh, 1.0);
+        const Material material;
+        computeLumpedMasses(input, material.density);
+        std::vector<Vec3> points(input.positions().begin(), input.positions().end());
+        const auto [lo, hi] = boundingBox(points);
+        const Eigen::AlignedBox3d bounds(lo, hi);
+        FixedSelection anchors;
+        const Vec3 margin = Vec3::Constant(0.01 * (hi - lo).norm());
+        anchors.box = std::array<Vec3, 2>{lo - margin, Vec3(hi.x(), hi.y(), lo.z() + 0.05 * (hi.z() - lo.z())) + margin};
+        Tissue tissue;
+        QVERIFY(Tissue::create(input, {}, material, anchors, tissue).ok());
+        tissue.setResectedPieces(ResectedPieces::Remove);
+        const int tets0 = input.tetCount();
+        const double ratio0 = summarizeQuality(input).minRadiusRatio;
+        const double volume0 = input.totalReferenceVolume(), mass0 = sumOfMasses(input);
+        std::mt19937 rng(seed);
+        int mostTets = tets0, cuts = 0;
+        double leastRatio = 1e300;
+        for (int k = 0; k < 20; ++k) {
+            MouseStrokeShape shape;
+            shape.halfWidth = 0.3 * (hi.x() - lo.x());
+            shape.depthFraction = 0.1 + 0.04 * k;
+            SweepSurface sweep;
+            if (!SweepSurface::fromCurves(mouseStroke(rng, bounds, shape), sweep).ok())
+                continue;
+            const QString at = QString("stroke at pass %1").arg(k + 1);
+            TissueCut cut;
+            const Status s = tissue.cut(sweep, kDefaults, &cut);
+            QVERIFY2(s.ok(), qPrintable(at + ": " + QString::fromStdString(s.message())));
+            ++cuts;
+            const TetMesh& m = tissue.mesh();
+            mostTets = std::max(mostTets, m.tetCount());
+            leastRatio = std::min(leastRatio, summarizeQuality(m).minRadiusRatio / ratio0);
+            QVERIFY2(m.tetCount() < 2 * tets0, qPrintable(at + QString(": %1 tets, input had %2").arg(m.tetCount()).arg(tets0)));
+            const double volume = m.totalReferenceVolume() + tissue.resectedVolume();
+            const double mass = sumOfMasses(m) + tissue.resectedMass();
+            QVERIFY2(std::abs(volume - volume0) <= 1e-9 * volume0, qPrintable(at + QString(": volume %1 -> %2").arg(volume0).arg(volume)));
+            QVERIFY2(std::abs(mass - mass0) <= 1e-9 * mass0, qPrintable(at + QString(": mass %1 -> %2").arg(mass0).arg(mass)));
+            const auto problems = checkValidity(m);
+            if (!problems.empty())
+                QFAIL(qPrintable(at + ": " + QString::fromStdString(problems.front().message)));
+        }
+        qInfo("%s: %d tets at the most (input %d, %.2f times); least worst ratio %.3g times the input's", qPrintable(mesh),
+              mostTets, tets0, static_cast<double>(mostTets) / tets0, leastRatio);
+        QVERIFY(cuts >= 18);
+    }
+
 private:
     /// 20 passes: scoops, or with `withStrokes` every fifth a mouse-like stroke across the body.
     void run(const QString& mesh, double scale, unsigned seed, bool withStrokes, double ratioBound, double edgeBound) {
