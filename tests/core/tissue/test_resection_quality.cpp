@@ -100,6 +100,29 @@ const TetMesh& body(const QString& name, double scale) {
     return cache.emplace(key, std::move(mesh)).first->second;
 }
 
+/// The body's mesh at a scale with lumped masses, its bounds, and a tissue of it anchored at its
+/// base (the bottom 5 % of the height), resected pieces removed.
+struct Anchored {
+    TetMesh input;
+    Eigen::AlignedBox3d bounds;
+    Tissue tissue;
+};
+bool anchoredTissue(const QString& mesh, double scale, Anchored& out) {
+    out.input = body(mesh, scale);
+    const Material material;
+    computeLumpedMasses(out.input, material.density);
+    std::vector<Vec3> points(out.input.positions().begin(), out.input.positions().end());
+    const auto [lo, hi] = boundingBox(points);
+    out.bounds = Eigen::AlignedBox3d(lo, hi);
+    FixedSelection anchors;
+    const Vec3 margin = Vec3::Constant(0.01 * (hi - lo).norm());
+    anchors.box = std::array<Vec3, 2>{lo - margin, Vec3(hi.x(), hi.y(), lo.z() + 0.05 * (hi.z() - lo.z())) + margin};
+    if (!Tissue::create(out.input, {}, material, anchors, out.tissue).ok())
+        return false;
+    out.tissue.setResectedPieces(ResectedPieces::Remove);
+    return true;
+}
+
 } // namespace
 
 class TestResectionQuality : public QObject {
@@ -197,18 +220,11 @@ private slots:
     void partialStrokesOnly() {
         QFETCH(QString, mesh);
         QFETCH(unsigned, seed);
-        TetMesh input = body(mesh, 1.0);
-        const Material material;
-        computeLumpedMasses(input, material.density);
-        std::vector<Vec3> points(input.positions().begin(), input.positions().end());
-        const auto [lo, hi] = boundingBox(points);
-        const Eigen::AlignedBox3d bounds(lo, hi);
-        FixedSelection anchors;
-        const Vec3 margin = Vec3::Constant(0.01 * (hi - lo).norm());
-        anchors.box = std::array<Vec3, 2>{lo - margin, Vec3(hi.x(), hi.y(), lo.z() + 0.05 * (hi.z() - lo.z())) + margin};
-        Tissue tissue;
-        QVERIFY(Tissue::create(input, {}, material, anchors, tissue).ok());
-        tissue.setResectedPieces(ResectedPieces::Remove);
+        Anchored a;
+        QVERIFY(anchoredTissue(mesh, 1.0, a));
+        const TetMesh& input = a.input;
+        Tissue& tissue = a.tissue;
+        const Vec3 lo = a.bounds.min(), hi = a.bounds.max();
         const int tets0 = input.tetCount();
         const double ratio0 = summarizeQuality(input).minRadiusRatio;
         const double volume0 = input.totalReferenceVolume(), mass0 = sumOfMasses(input);
@@ -220,7 +236,7 @@ private slots:
             shape.halfWidth = 0.3 * (hi.x() - lo.x());
             shape.depthFraction = 0.1 + 0.04 * k;
             SweepSurface sweep;
-            if (!SweepSurface::fromCurves(mouseStroke(rng, bounds, shape), sweep).ok())
+            if (!SweepSurface::fromCurves(mouseStroke(rng, a.bounds, shape), sweep).ok())
                 continue;
             const QString at = QString("stroke at pass %1").arg(k + 1);
             TissueCut cut;
@@ -247,19 +263,12 @@ private slots:
 private:
     /// 20 passes: scoops, or with `withStrokes` every fifth a mouse-like stroke across the body.
     void run(const QString& mesh, double scale, unsigned seed, bool withStrokes, double ratioBound, double edgeBound) {
-        TetMesh input = body(mesh, scale);
-        const Material material;
-        computeLumpedMasses(input, material.density);
-        std::vector<Vec3> points(input.positions().begin(), input.positions().end());
-        const auto [lo, hi] = boundingBox(points);
-        const Eigen::AlignedBox3d bounds(lo, hi);
-        // Anchored at the base: the bottom 5 % of the height.
-        FixedSelection anchors;
-        const Vec3 margin = Vec3::Constant(0.01 * (hi - lo).norm());
-        anchors.box = std::array<Vec3, 2>{lo - margin, Vec3(hi.x(), hi.y(), lo.z() + 0.05 * (hi.z() - lo.z())) + margin};
-        Tissue tissue;
-        QVERIFY(Tissue::create(input, {}, material, anchors, tissue).ok());
-        tissue.setResectedPieces(ResectedPieces::Remove);
+        Anchored a;
+        QVERIFY(anchoredTissue(mesh, scale, a));
+        const TetMesh& input = a.input;
+        Tissue& tissue = a.tissue;
+        const Eigen::AlignedBox3d& bounds = a.bounds;
+        const Vec3 lo = bounds.min(), hi = bounds.max();
         const int anchoredBefore = static_cast<int>(tissue.anchors().nodes().size());
         QVERIFY(anchoredBefore > 0);
 
