@@ -1,11 +1,14 @@
 #include "core/cut/improve_mesh.h"
 
+#include "core/mesh/index_marks.h"
+
 #include "core/cut/update_rest_state.h"
 #include "core/mesh/body_surface.h"
 #include "core/mesh/predicates.h"
 #include "core/mesh/quality.h"
 #include "core/mesh/tet_grid.h"
 #include "core/mesh/topology.h"
+#include "core/mesh/uniform_cells.h"
 #include "core/mesh/validity.h"
 
 #include <Eigen/Cholesky>
@@ -1556,50 +1559,40 @@ private:
         std::vector<std::array<Vec3, 4>> corners;
         std::vector<Eigen::AlignedBox3d> boxes;
         std::vector<int> nodes;
-        /// A dense grid over `box`: per cell the tets (indices into `tets`) whose box reaches
-        /// into it and the nodes in it, so that intrusion() looks at what is near each point
-        /// and tet only (it looked at all of them: a third of a small mesh each time).
+        /// A grid over `box` (at most kCells cells along an axis): per cell the tets (indices
+        /// into `tets`) whose box reaches into it and the nodes in it, so that intrusion() looks
+        /// at what is near each point and tet only (it looked at all of them: a third of a small
+        /// mesh each time).
         static constexpr int kCells = 8;
+        UniformCells cells;
         std::vector<std::vector<int>> tetsIn, nodesIn;
-        std::array<int, 3> cellOf(const Vec3& x) const {
-            std::array<int, 3> c{};
-            for (int d = 0; d < 3; ++d) {
-                const double extent = box.max()[d] - box.min()[d];
-                const int i = extent > 0 ? static_cast<int>(std::floor((x[d] - box.min()[d]) / extent * kCells)) : 0;
-                c[d] = std::clamp(i, 0, kCells - 1);
-            }
-            return c;
+        void buildGrid(const TetMesh& m) {
+            const double size = (box.max() - box.min()).maxCoeff() / kCells;
+            cells = UniformCells(box.min(), box.max(), std::max(size, 1e-300), kCells);
+            tetsIn.assign(cells.count(), {});
+            nodesIn.assign(cells.count(), {});
+            for (std::size_t t = 0; t < boxes.size(); ++t)
+                forEachCell(boxes[t], [&](std::int64_t c) { tetsIn[c].push_back(static_cast<int>(t)); });
+            for (int u : nodes)
+                nodesIn[cells.index(cells.of(m.ref(u)))].push_back(u);
         }
-        static int index(int i, int j, int k) { return (i * kCells + j) * kCells + k; }
-        void index(const std::vector<Vec3>& nodePositions) {
-            tetsIn.assign(kCells * kCells * kCells, {});
-            nodesIn.assign(kCells * kCells * kCells, {});
-            for (std::size_t t = 0; t < boxes.size(); ++t) {
-                const auto lo = cellOf(boxes[t].min()), hi = cellOf(boxes[t].max());
-                for (int i = lo[0]; i <= hi[0]; ++i)
-                    for (int j = lo[1]; j <= hi[1]; ++j)
-                        for (int k = lo[2]; k <= hi[2]; ++k)
-                            tetsIn[index(i, j, k)].push_back(static_cast<int>(t));
-            }
-            for (std::size_t u = 0; u < nodes.size(); ++u) {
-                const auto c = cellOf(nodePositions[u]);
-                nodesIn[index(c[0], c[1], c[2])].push_back(nodes[u]);
-            }
+        template <class F>
+        void forEachCell(const Eigen::AlignedBox3d& b, F f) const {
+            const Eigen::Array3i lo = cells.of(b.min()), hi = cells.of(b.max());
+            for (int z = lo.z(); z <= hi.z(); ++z)
+                for (int y = lo.y(); y <= hi.y(); ++y)
+                    for (int x = lo.x(); x <= hi.x(); ++x)
+                        f(cells.index({x, y, z}));
         }
         /// The tets whose box may contain x (x in `box`; each once).
-        const std::vector<int>& tetsAt(const Vec3& x) const {
-            const auto c = cellOf(x);
-            return tetsIn[index(c[0], c[1], c[2])];
-        }
+        const std::vector<int>& tetsAt(const Vec3& x) const { return tetsIn[cells.index(cells.of(x))]; }
         /// Calls f for every node that may lie in `b` (each once).
         template <class F>
         void forEachNodeIn(const Eigen::AlignedBox3d& b, F f) const {
-            const auto lo = cellOf(b.min()), hi = cellOf(b.max());
-            for (int i = lo[0]; i <= hi[0]; ++i)
-                for (int j = lo[1]; j <= hi[1]; ++j)
-                    for (int k = lo[2]; k <= hi[2]; ++k)
-                        for (int u : nodesIn[index(i, j, k)])
-                            f(u);
+            forEachCell(b, [&](std::int64_t c) {
+                for (int u : nodesIn[c])
+                    f(u);
+            });
         }
     };
     Nearby nearby(const std::vector<Tet>& star, int v, double margin) const {
@@ -1615,23 +1608,17 @@ private:
         Nearby n;
         n.box = padded(refBox, margin);
         // The candidates that reach into the box and that the star does not replace, each
-        // once: per tet slot, the call that last took it (kept per thread across passes, so that
-        // it grows with the mesh once, not at every pass; sorting the hits instead cost a third
-        // of the pass where many walls are not glued).
+        // once: marked per tet slot (IndexMarks, kept per thread across passes, so that it grows
+        // with the mesh once and costs what it marks; sorting the hits instead cost a third of
+        // the pass where many walls are not glued).
         std::vector<int> hits;
         const auto [ga, gb] = guardEdge;
-        thread_local std::vector<unsigned> stamp;
-        thread_local unsigned call = 0;
-        if (stamp.size() < static_cast<std::size_t>(m.tetCount()))
-            stamp.resize(static_cast<std::size_t>(m.tetCount()) * 5 / 4 + 64, 0);
-        if (++call == 0) {  // (wrapped around: no slot may keep an old stamp)
-            std::fill(stamp.begin(), stamp.end(), 0);
-            call = 1;
-        }
+        thread_local IndexMarks<char> taken;
+        const auto scope = taken.use(static_cast<std::size_t>(m.tetCount()));
         const auto consider = [&](int t) {
-            if (t < 0 || t >= m.tetCount() || stamp[t] == call)
+            if (t < 0 || t >= m.tetCount() || taken[t])
                 return;
-            stamp[t] = call;
+            taken.set(t, 1);
             const Tet& q = m.tet(t);
             if (contains(q, v) || (ga >= 0 && contains(q, ga) && (gb < 0 || contains(q, gb))))
                 return;
@@ -1676,11 +1663,7 @@ private:
         }
         std::sort(n.nodes.begin(), n.nodes.end());
         n.nodes.erase(std::unique(n.nodes.begin(), n.nodes.end()), n.nodes.end());
-        std::vector<Vec3> at;
-        at.reserve(n.nodes.size());
-        for (int u : n.nodes)
-            at.push_back(m.ref(u));
-        n.index(at);
+        n.buildGrid(m);
         return n;
     }
     static bool contains(const Tet& q, int u) { return u >= 0 && std::find(q.begin(), q.end(), u) != q.end(); }

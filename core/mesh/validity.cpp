@@ -2,6 +2,7 @@
 
 #include "core/mesh/predicates.h"
 #include "core/mesh/topology.h"
+#include "core/mesh/uniform_cells.h"
 
 #include <Eigen/Geometry>
 
@@ -19,22 +20,6 @@ namespace {
 bool finite(const Vec3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
 
 std::string tetName(int t) { return "tet " + std::to_string(t); }
-
-/// A uniform grid's cells over the box [lo, hi]: at most maxDim cells along an axis, points
-/// outside clamped to the nearest cell.
-struct Cells {
-    Vec3 lo;
-    double size;
-    Eigen::Array3i dims;
-    Cells(const Vec3& lo_, const Vec3& hi, double size_, int maxDim)
-        : lo(lo_), size(size_), dims((((hi - lo_) / size_).array().floor().cast<int>() + 1).min(maxDim).max(1)) {}
-    Eigen::Array3i of(const Vec3& p) const {
-        return ((p - lo) / size).array().floor().cast<int>().max(0).min(dims - 1);
-    }
-    std::int64_t index(const Eigen::Array3i& c) const {
-        return (static_cast<std::int64_t>(c.z()) * dims.y() + c.y()) * dims.x() + c.x();
-    }
-};
 
 } // namespace
 
@@ -122,7 +107,7 @@ std::vector<MeshProblem> checkValidity(const TetMesh& mesh) {
             }
             sizeSum += (mesh.ref(f->nodes[1]) - mesh.ref(f->nodes[0])).norm();
         }
-        const Cells cells(lo, hi, std::max(sizeSum / boundary.size(), 1e-300), 1 << 10);
+        const UniformCells cells(lo, hi, std::max(sizeSum / boundary.size(), 1e-300), 1 << 10);
         std::unordered_map<std::int64_t, std::vector<int>> grid;
         for (int v : boundaryNodes)
             if (!badNode[v])
@@ -189,7 +174,7 @@ MeshOverlap deepestOverlap(const TetMesh& mesh) {
     }
     if (!(lo.array() <= hi.array()).all())
         return worst;
-    const Cells cells(lo, hi, std::max(extent / mesh.tetCount(), 1e-300), 1 << 9);
+    const UniformCells cells(lo, hi, std::max(extent / mesh.tetCount(), 1e-300), 1 << 9);
     std::unordered_map<std::int64_t, std::vector<int>> grid;  // cell -> boundary nodes, ascending
     for (int n = 0; n < mesh.nodeCount(); ++n)
         if (onBoundary[n] && finite(mesh.ref(n)))
