@@ -18,6 +18,7 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -1668,6 +1669,68 @@ private:
     }
     static bool contains(const Tet& q, int u) { return u >= 0 && std::find(q.begin(), q.end(), u) != q.end(); }
 
+    /// Whether the tets `star` with node v at p make a hanging node as checkValidity finds them
+    /// (exactly): a nearby node on a boundary face of the star at v (on an edge or inside, not at
+    /// a corner's position), or v at p on a boundary face of a nearby tet. The overlap the guard
+    /// measures is a depth, and a node slid along a flat boundary makes none: where the walls of
+    /// a crack are not glued, a rim node moved along the crack's mouth on the box's flat side
+    /// left its unglued copy on the moved wall's faces (box, twenty partial strokes, seed 9,
+    /// pass 1; issue 16).
+    bool hangs(const std::vector<Tet>& star, int v, const Vec3& p, const Nearby& near) const {
+        // The star's faces at v that no other tet of the star has: its boundary there.
+        std::vector<TriKey> facesAtV;
+        for (const Tet& q : star)
+            for (const auto& lf : kTetFaces) {
+                const Tri f{q[lf[0]], q[lf[1]], q[lf[2]]};
+                if (f[0] == v || f[1] == v || f[2] == v)
+                    facesAtV.push_back(TriKey::of(f));
+            }
+        const auto byNodes = [](const TriKey& x, const TriKey& y) { return std::tie(x.a, x.b, x.c) < std::tie(y.a, y.b, y.c); };
+        std::sort(facesAtV.begin(), facesAtV.end(), byNodes);
+        const auto at = [&](int u) -> const Vec3& { return u == v ? p : m.ref(u); };
+        for (std::size_t i = 0; i < facesAtV.size(); ++i) {
+            if ((i > 0 && facesAtV[i] == facesAtV[i - 1]) || (i + 1 < facesAtV.size() && facesAtV[i] == facesAtV[i + 1]))
+                continue;
+            const TriKey& f = facesAtV[i];
+            const Vec3 &a = at(f.a), &b = at(f.b), &c = at(f.c);
+            Eigen::AlignedBox3d box(a);
+            box.extend(b);
+            box.extend(c);
+            bool found = false;
+            near.forEachNodeIn(box, [&](int u) {
+                const Vec3& x = m.ref(u);
+                if (found || u == f.a || u == f.b || u == f.c || u == v || x == a || x == b || x == c || !box.contains(x))
+                    return;
+                found = orient3d(a, b, c, x) == 0 && inClosedTriangle(x, a, b, c);
+            });
+            if (found)
+                return true;
+        }
+        // v at p on a face of a nearby tet that is on the boundary (in no other tet).
+        if (!near.box.contains(p))
+            return false;
+        for (int i : near.tetsAt(p)) {
+            if (!near.boxes[i].contains(p))
+                continue;
+            const Tet& q = near.tets[i];
+            const std::array<Vec3, 4>& c = near.corners[i];
+            if (p == c[0] || p == c[1] || p == c[2] || p == c[3])
+                continue;
+            for (const auto& lf : kTetFaces) {
+                if (orient3d(c[lf[0]], c[lf[1]], c[lf[2]], p) != 0 || !inClosedTriangle(p, c[lf[0]], c[lf[1]], c[lf[2]]))
+                    continue;
+                int sharing = 0;
+                for (int t : m.nodeTets(q[lf[0]])) {
+                    const Tet& w = m.tet(t);
+                    sharing += contains(w, q[lf[1]]) && contains(w, q[lf[2]]);
+                }
+                if (sharing < 2)
+                    return true;
+            }
+        }
+        return false;
+    }
+
     /// The longest edge of the tets `star` (reference positions).
     double longestEdge(const std::vector<Tet>& star) const {
         double longest = 0;
@@ -1737,7 +1800,8 @@ private:
     /// The overlap guard for placing node v (now at its reference position) with the tets
     /// `before` around it as the tets `after`: on first use it measures `before` (intrusion()),
     /// then refuses a placement that makes `after` reach deeper, and deeper than
-    /// ImproveOptions::overlapSlack times the longest edge of `before`.
+    /// ImproveOptions::overlapSlack times the longest edge of `before`, or that makes a hanging
+    /// node (hangs()).
     class OverlapGuard {
     public:
         OverlapGuard(const Pass& pass, const std::vector<Tet>& before, const std::vector<Tet>& after, int v, bool on)
@@ -1753,7 +1817,8 @@ private:
                 m_afterNodes = nodesOf(m_after);
                 m_still = m_pass.intrusion(m_after, m_afterNodes, m_v, p, *m_near, Pairs::WithoutV);
             }
-            return m_still > m_depth || m_pass.intrusion(m_after, m_afterNodes, m_v, p, *m_near, Pairs::WithV) > m_depth;
+            return m_still > m_depth || m_pass.intrusion(m_after, m_afterNodes, m_v, p, *m_near, Pairs::WithV) > m_depth ||
+                   m_pass.hangs(m_after, m_v, p, *m_near);
         }
 
     private:

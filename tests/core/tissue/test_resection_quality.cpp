@@ -213,13 +213,21 @@ private slots:
     void partialStrokesOnly_data() {
         QTest::addColumn<QString>("mesh");
         QTest::addColumn<unsigned>("seed");
+        QTest::addColumn<int>("passes");
         for (const char* mesh : {"polyp", "myoma"})
             for (unsigned seed : {7u, 8u, 9u})
-                QTest::newRow(qPrintable(QString("%1, seed %2").arg(mesh).arg(seed))) << QString(mesh) << seed;
+                QTest::newRow(qPrintable(QString("%1, seed %2").arg(mesh).arg(seed))) << QString(mesh) << seed << 20;
+        // A regression: on the lattice box the improvement slid a rim node of an unglued crack
+        // wall along the crack's mouth on the box's flat side (y = 10), and the other wall's copy
+        // of the node then lay on the moved wall's face (a T-junction at pass 1; the overlap
+        // guard measures depths, and this made none). The guard now refuses a placement that
+        // makes a hanging node. Three passes only: the box's improvement takes seconds a cut.
+        QTest::newRow("box, seed 9") << QString("box") << 9u << 3;
     }
     void partialStrokesOnly() {
         QFETCH(QString, mesh);
         QFETCH(unsigned, seed);
+        QFETCH(int, passes);
         Anchored a;
         QVERIFY(anchoredTissue(mesh, 1.0, a));
         const TetMesh& input = a.input;
@@ -231,7 +239,7 @@ private slots:
         std::mt19937 rng(seed);
         int mostTets = tets0, cuts = 0;
         double leastRatio = 1e300;
-        for (int k = 0; k < 20; ++k) {
+        for (int k = 0; k < passes; ++k) {
             MouseStrokeShape shape;
             shape.halfWidth = 0.3 * (hi.x() - lo.x());
             shape.depthFraction = 0.1 + 0.04 * k;
@@ -257,7 +265,7 @@ private slots:
         }
         qInfo("%s: %d tets at the most (input %d, %.2f times); least worst ratio %.3g times the input's", qPrintable(mesh),
               mostTets, tets0, static_cast<double>(mostTets) / tets0, leastRatio);
-        QVERIFY(cuts >= 18);
+        QVERIFY(cuts >= passes - 2);
     }
 
 private:
