@@ -1709,6 +1709,7 @@ private:
         // v at p on a face of a nearby tet that is on the boundary (in no other tet).
         if (!near.box.contains(p))
             return false;
+        std::vector<int> sharing;
         for (int i : near.tetsAt(p)) {
             if (!near.boxes[i].contains(p))
                 continue;
@@ -1719,12 +1720,8 @@ private:
             for (const auto& lf : kTetFaces) {
                 if (orient3d(c[lf[0]], c[lf[1]], c[lf[2]], p) != 0 || !inClosedTriangle(p, c[lf[0]], c[lf[1]], c[lf[2]]))
                     continue;
-                int sharing = 0;
-                for (int t : m.nodeTets(q[lf[0]])) {
-                    const Tet& w = m.tet(t);
-                    sharing += contains(w, q[lf[1]]) && contains(w, q[lf[2]]);
-                }
-                if (sharing < 2)
+                m.faceTets(q[lf[0]], q[lf[1]], q[lf[2]], sharing);
+                if (sharing.size() < 2)
                     return true;
             }
         }
