@@ -1670,12 +1670,12 @@ private:
     static bool contains(const Tet& q, int u) { return u >= 0 && std::find(q.begin(), q.end(), u) != q.end(); }
 
     /// Whether the tets `star` with node v at p make a hanging node as checkValidity finds them
-    /// (exactly): a nearby node on a boundary face of the star at v (on an edge or inside, not at
-    /// a corner's position), or v at p on a boundary face of a nearby tet. The overlap the guard
-    /// measures is a depth, and a node slid along a flat boundary makes none: where the walls of
-    /// a crack are not glued, a rim node moved along the crack's mouth on the box's flat side
-    /// left its unglued copy on the moved wall's faces (box, twenty partial strokes, seed 9,
-    /// pass 1; issue 16).
+    /// (hangsOn, exactly): a nearby node on a boundary face of the star at v (on an edge or
+    /// inside, not at a corner's position), or v at p on a boundary face of a nearby tet. The
+    /// overlap the guard measures is a depth, and a node slid along a flat boundary makes none:
+    /// where the walls of a crack are not glued, a rim node moved along the crack's mouth on the
+    /// box's flat side left its unglued copy on the moved wall's faces (box, twenty partial
+    /// strokes, seed 9, pass 1; issue 16).
     bool hangs(const std::vector<Tet>& star, int v, const Vec3& p, const Nearby& near) const {
         // The star's faces at v that no other tet of the star has: its boundary there.
         std::vector<TriKey> facesAtV;
@@ -1699,9 +1699,8 @@ private:
             bool found = false;
             near.forEachNodeIn(box, [&](int u) {
                 const Vec3& x = m.ref(u);
-                if (found || u == f.a || u == f.b || u == f.c || u == v || x == a || x == b || x == c || !box.contains(x))
-                    return;
-                found = orient3d(a, b, c, x) == 0 && inClosedTriangle(x, a, b, c);
+                if (!found && u != f.a && u != f.b && u != f.c && u != v && box.contains(x))
+                    found = hangsOn(x, a, b, c);
             });
             if (found)
                 return true;
@@ -1718,7 +1717,7 @@ private:
             if (p == c[0] || p == c[1] || p == c[2] || p == c[3])
                 continue;
             for (const auto& lf : kTetFaces) {
-                if (orient3d(c[lf[0]], c[lf[1]], c[lf[2]], p) != 0 || !inClosedTriangle(p, c[lf[0]], c[lf[1]], c[lf[2]]))
+                if (!hangsOn(p, c[lf[0]], c[lf[1]], c[lf[2]]))
                     continue;
                 m.faceTets(q[lf[0]], q[lf[1]], q[lf[2]], sharing);
                 if (sharing.size() < 2)

@@ -23,6 +23,10 @@ std::string tetName(int t) { return "tet " + std::to_string(t); }
 
 } // namespace
 
+bool hangsOn(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    return p != a && p != b && p != c && orient3d(a, b, c, p) == 0 && inClosedTriangle(p, a, b, c);
+}
+
 const char* toString(MeshProblem::Kind kind) {
     switch (kind) {
     case MeshProblem::Kind::NonFiniteCoordinate: return "non_finite_coordinate";
@@ -127,10 +131,8 @@ std::vector<MeshProblem> checkValidity(const TetMesh& mesh) {
                             continue;
                         for (int v : it->second) {
                             const Vec3& p = mesh.ref(v);
-                            if (v == n[0] || v == n[1] || v == n[2] || p == pa || p == pb ||
-                                p == pc || comp.nodeComponent[v] != comp.nodeComponent[n[0]])
-                                continue;
-                            if (orient3d(pa, pb, pc, p) != 0 || !inClosedTriangle(p, pa, pb, pc))
+                            if (v == n[0] || v == n[1] || v == n[2] ||
+                                comp.nodeComponent[v] != comp.nodeComponent[n[0]] || !hangsOn(p, pa, pb, pc))
                                 continue;
                             if (reported++ < 1000)
                                 problems.push_back(

@@ -27,6 +27,12 @@ struct MeshProblem {
 
 const char* toString(MeshProblem::Kind kind);
 
+/// Whether a node at p hangs on the triangle (a, b, c) as checkValidity decides it (a
+/// T-junction where the triangle is a boundary face of p's piece): p lies in the closed
+/// triangle, exactly, without being at one of its corners' positions (separated cut nodes
+/// coincide by design). The improvement's overlap guard refuses placements by the same test.
+bool hangsOn(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
 /// Orientation decisions use exact predicates (predicates.h). Unused nodes and inverted
 /// current tets are reported as problems too; the caller decides what is fatal.
 std::vector<MeshProblem> checkValidity(const TetMesh& mesh);
