@@ -3,12 +3,15 @@
 #include "core/cut/snap_nodes.h"
 #include "core/mesh/predicates.h"
 #include "core/mesh/quality.h"
+#include "core/mesh/validity.h"
 #include "core/sweep/intersect_segment.h"
 
 #include <Eigen/LU>
 
 #include <algorithm>
+#include <array>
 #include <limits>
+#include <map>
 #include <string>
 
 namespace resect {
@@ -685,10 +688,24 @@ Status decomposeTets(TetMesh& mesh, const CutSelection& selection, const Decompo
                      Decomposition& out, CutChanges& changes) {
     // Split points on the cut edges: Eq. 1, the crossing parameter t of the deformed
     // configuration applied to the reference positions (and velocities).
+    // The two walls of an earlier crack have edges at the same reference positions (twins, by
+    // different nodes). Computed from opposite ends, their split points can land a rounding
+    // apart, and one wall's new node then hangs on the other wall's face (a T-junction, traced
+    // on the lattice box with twenty partial strokes before the improvement's guard refused
+    // hanging nodes; issue 16). Where it would, the second twin takes the first one's point.
+    std::map<std::array<double, 6>, std::pair<int, std::array<int, 2>>> firstOfTwins;
     for (const EdgeCrossing& c : selection.cutEdges) {
         const double t = c.hit.t;
-        const Vec3 ref = mesh.ref(c.a) + t * (mesh.ref(c.b) - mesh.ref(c.a));
+        Vec3 ref = mesh.ref(c.a) + t * (mesh.ref(c.b) - mesh.ref(c.a));
         const Vec3 pos = mesh.pos(c.a) + t * (mesh.pos(c.b) - mesh.pos(c.a));
+        const auto [twin, first] =
+            firstOfTwins.try_emplace(edgePositionKey(mesh, c.a, c.b), mesh.nodeCount(), std::array<int, 2>{c.a, c.b});
+        if (!first) {
+            const Vec3& other = mesh.ref(twin->second.first);
+            const auto [ta, tb] = twin->second.second;
+            if (other != ref && (hangsOnBoundaryFaceAt(mesh, ref, ta, tb) || hangsOnBoundaryFaceAt(mesh, other, c.a, c.b)))
+                ref = other;
+        }
         const int n = mesh.addNode(ref, pos);
         mesh.velocities()[n] = (1 - t) * mesh.velocities()[c.a] + t * mesh.velocities()[c.b];
         out.edgePoint.emplace(edgeKey(c.a, c.b), n);

@@ -27,6 +27,30 @@ bool hangsOn(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
     return p != a && p != b && p != c && orient3d(a, b, c, p) == 0 && inClosedTriangle(p, a, b, c);
 }
 
+bool hangsOnBoundaryFaceAt(const TetMesh& mesh, const Vec3& p, int a, int b) {
+    std::vector<int> sharing;
+    for (int t : mesh.nodeTets(a)) {
+        const Tet& q = mesh.tet(t);
+        if (std::find(q.begin(), q.end(), b) == q.end())
+            continue;
+        for (int c : q) {
+            if (c == a || c == b)
+                continue;
+            mesh.faceTets(a, b, c, sharing);
+            if (sharing.size() == 1 && hangsOn(p, mesh.ref(a), mesh.ref(b), mesh.ref(c)))
+                return true;
+        }
+    }
+    return false;
+}
+
+std::array<double, 6> edgePositionKey(const TetMesh& mesh, int a, int b) {
+    const Vec3 &pa = mesh.ref(a), &pb = mesh.ref(b);
+    const bool swap = std::lexicographical_compare(pb.data(), pb.data() + 3, pa.data(), pa.data() + 3);
+    const Vec3 &lo = swap ? pb : pa, &hi = swap ? pa : pb;
+    return {lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z()};
+}
+
 const char* toString(MeshProblem::Kind kind) {
     switch (kind) {
     case MeshProblem::Kind::NonFiniteCoordinate: return "non_finite_coordinate";

@@ -33,6 +33,15 @@ const char* toString(MeshProblem::Kind kind);
 /// coincide by design). The improvement's overlap guard refuses placements by the same test.
 bool hangsOn(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
+/// Whether a point at p hangs on a boundary face of the mesh (a face in one tet only) that
+/// has the edge (a, b), by hangsOn. Costs the tets at a.
+bool hangsOnBoundaryFaceAt(const TetMesh& mesh, const Vec3& p, int a, int b);
+
+/// The reference positions of the ends of edge (a, b), the lexicographically smaller first:
+/// the same for the copies of an edge on the two walls of a crack (twins), whichever way
+/// their nodes are numbered.
+std::array<double, 6> edgePositionKey(const TetMesh& mesh, int a, int b);
+
 /// Orientation decisions use exact predicates (predicates.h). Unused nodes and inverted
 /// current tets are reported as problems too; the caller decides what is fatal.
 std::vector<MeshProblem> checkValidity(const TetMesh& mesh);

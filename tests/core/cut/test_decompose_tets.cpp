@@ -8,11 +8,13 @@
 
 #include "core/cut/decompose_tets.h"
 #include "core/mesh/predicates.h"
+#include "core/mesh/validity.h"
 #include "core/sweep/intersect_segment.h"
 
 #include <QTest>
 
 #include <cmath>
+#include <tuple>
 
 using namespace resect;
 using resect::testing::unitTet;
@@ -372,6 +374,55 @@ private slots:
         QCOMPARE(mesh.tetCount(), 2);
         QCOMPARE(mesh.referenceVolume(0) + mesh.referenceVolume(1), 1.0 / 6.0);
         QCOMPARE(mesh.currentVolume(0) + mesh.currentVolume(1), 8.0 / 6.0);
+    }
+
+    void twinEdgesOfACrackGetOneSplitPoint() {
+        // The two walls of a crack: tets (0, 1, 2, 3) and (4, 5, 6, 7) whose faces (0, 1, 2) and
+        // (4, 5, 6) are the same triangle in the plane z = 0, by different nodes, the second
+        // wall's edge numbered from the other end. A sweep crosses both copies of the edge;
+        // step 2 gives each its t from its lower-numbered node, so the two split points are
+        // computed from opposite ends. Where rounding puts one of them on the other wall's face
+        // (exactly in the closed triangle, not at a corner: a T-junction), both get the same
+        // point; where neither hangs, each keeps its own (box, twenty partial strokes, seed 7,
+        // pass 16; issue 16).
+        const Vec3 P(0.1, 0.3, 0), Q(0.9, 0.7, 0), R(0.2, 0.9, 0);
+        int hanging = 0, apart = 0;
+        for (int i = 1; i < 400; ++i) {
+            const double t = i / 400.0 + 1e-4 * std::sin(i);
+            TetMesh mesh = TetMesh::fromArrays({P, Q, R, Vec3(0.4, 0.6, 1), Q, P, R, Vec3(0.4, 0.6, -1)},
+                                               {{0, 1, 2, 3}, {4, 5, 6, 7}});
+            QVERIFY(orient3d(mesh.ref(0), mesh.ref(1), mesh.ref(2), mesh.ref(3)) > 0);
+            QVERIFY(orient3d(mesh.ref(4), mesh.ref(5), mesh.ref(6), mesh.ref(7)) > 0);
+            CutSelection sel;
+            for (const auto& [a, b, tc] : {std::tuple{0, 1, t}, std::tuple{4, 5, 1 - t}}) {
+                EdgeCrossing c;
+                c.a = a;
+                c.b = b;
+                c.hit.t = tc;
+                c.hit.sideP = 1;
+                sel.cutEdgeIndex.emplace(edgeKey(a, b), static_cast<int>(sel.cutEdges.size()));
+                sel.cutEdges.push_back(c);
+            }
+            const Vec3 p = P + t * (Q - P), q = Q + (1 - t) * (P - Q);
+            const bool hangs = hangsOn(p, Q, P, R) || hangsOn(q, P, Q, R);
+            Decomposition d;
+            CutChanges changes;
+            DecomposeOptions options;
+            options.sweep = nullptr;
+            QVERIFY(decomposeTets(mesh, sel, options, d, changes).ok());
+            const Vec3 &got0 = mesh.ref(d.edgePoint.at(edgeKey(0, 1))), &got1 = mesh.ref(d.edgePoint.at(edgeKey(4, 5)));
+            QCOMPARE(got0, p);
+            if (hangs) {
+                ++hanging;
+                QCOMPARE(got1, p);
+            } else {
+                apart += p != q;
+                QCOMPARE(got1, q);
+            }
+        }
+        // Both kinds occur among these 399 crossings.
+        QVERIFY2(hanging > 0, qPrintable(QString("%1 hanging").arg(hanging)));
+        QVERIFY2(apart > 0, qPrintable(QString("%1 apart without hanging").arg(apart)));
     }
 };
 

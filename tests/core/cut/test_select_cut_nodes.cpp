@@ -9,6 +9,7 @@
 #include "step_fixtures.h"
 
 #include "core/cut/select_cut_nodes.h"
+#include "core/mesh/predicates.h"
 
 #include <QTest>
 
@@ -411,6 +412,38 @@ private slots:
             cutNodes.back() == 2 ? std::array<int, 2>{3, 7} : std::array<int, 2>{2, 4};
         QVERIFY(o.cutEdges.count(refusedEdge));
         QVERIFY(!o.cutEdges.count({2, 3}));
+    }
+
+    void twinCopiesOfACrackWallAgree_data() {
+        QTest::addColumn<double>("shiftB");
+        QTest::addColumn<std::vector<int>>("cutNodes");
+        QTest::newRow("twins") << 0.0 << std::vector<int>{1, 5, 7, 8};
+        QTest::newRow("not twins") << -1e-3 << std::vector<int>{0, 1, 5, 7, 8};
+    }
+    void twinCopiesOfACrackWallAgree() {
+        QFETCH(double, shiftB);
+        QFETCH(std::vector<int>, cutNodes);
+        // The two walls of an earlier crack in the plane y = 0: tet A (0, 1, 2, 3) on y > 0 and
+        // tet B (4, 5, 6, 7) on y < 0, nodes 4-6 copies of 0-2 at the same positions. The
+        // sweep z = 0 crosses edge 0-2 and its copy 4-6 near nodes 0 and 4 (0.1 above it, d
+        // 0.2); nodes 1, 5, 7 and 8 lie on it. Node 0 becomes a cut node, its copy 4 cannot (tet
+        // C, at 4, already has three), so A's edge would keep its length while B's copy is
+        // split at a point on A's face (0, 1, 2): a T-junction (issue 16; box, twenty partial
+        // strokes, seed 7). Node 0 is then no cut node either, and both copies are split.
+        // Where B is not an exact copy (moved 0.001 off the wall), node 0 stays a cut node.
+        const Vec3 P0(0, 0, 0.1), P1(1, 0, 0), P2(0, 0, -1), shift(0, shiftB, 0);
+        std::vector<Vec3> nodes{P0, P1, P2, Vec3(0.3, 1, 0.5), P0 + shift, P1, P2 + shift, Vec3(0.3, -1, 0), Vec3(1, -1, 0)};
+        std::vector<Tet> tets{{0, 1, 2, 3}, {4, 5, 6, 7}, {4, 5, 7, 8}};
+        for (Tet& q : tets)
+            if (orient3d(nodes[q[0]], nodes[q[1]], nodes[q[2]], nodes[q[3]]) < 0)
+                std::swap(q[0], q[1]);
+        const TetMesh mesh = TetMesh::fromArrays(nodes, tets);
+        const SweepSurface sweep = planeZ0(-2, 2, -2, 2);
+        const CutSelection sel =
+            selectCutNodes(mesh, sweep, crossingsOfZ0(mesh, sweep, {{0, 2}, {2, 3}, {4, 6}}, {1, 5, 7, 8}), hybrid(0.2));
+        QCOMPARE(sel.cutNodes, cutNodes);
+        QVERIFY(sel.cutEdgeIndex.count(edgeKey(4, 6)));
+        QCOMPARE(sel.cutEdgeIndex.count(edgeKey(0, 2)), cutNodes.front() == 0 ? std::size_t{0} : std::size_t{1});
     }
 
     void midpointTieDependsOnNodeNumbering() {
