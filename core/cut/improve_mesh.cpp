@@ -277,7 +277,16 @@ public:
           nodes(region.nodes), tetOrigin(mesh.tetCount()), nodeOrigin(mesh.nodeCount()), startNodes(mesh.nodeCount()) {
         flippable = editable;
         flippable.insert(region.fixed.begin(), region.fixed.end());
-        fixedInRegion = region.fixed;
+        for (int n : region.fixed) {
+            if (o.moveAnchored && keptOut(m.ref(n))) {  // (ImproveOptions::moveAnchored)
+                anchored.insert(n);
+                editable.insert(n);
+                nodes.push_back(n);
+            } else {
+                fixedInRegion.push_back(n);
+            }
+        }
+        std::sort(nodes.begin(), nodes.end());
     }
 
     void run() {
@@ -305,6 +314,7 @@ private:
     std::unordered_set<int> flippable;  ///< nodes whose tets may be flipped (also the fixed ones: flips move no node)
     std::vector<int> nodes;                      ///< the region's nodes (original indices)
     std::vector<int> fixedInRegion;
+    std::unordered_set<int> anchored;  ///< fixed nodes that may move within keepOut (moveAnchored)
     std::unordered_map<int, int> mergedInto;     ///< collapsed node -> node it merged into
     std::unordered_set<int> moved, touched;
     SlotOrigins tetOrigin, nodeOrigin;           ///< what each changed slot held at the start
@@ -388,6 +398,14 @@ private:
             return false;
         const auto& [lo, hi] = *o.keepOut;
         return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
+    }
+    /// Whether the nodes `ns`, merged or moved to p, may not go there: free nodes stay out of
+    /// keepOut, anchored ones (moveAnchored) in it, and the two kinds are not merged.
+    bool misplaced(std::initializer_list<int> ns, const Vec3& p) const {
+        const auto isAnchored = [&](int n) { return anchored.count(n) > 0; };
+        if (std::none_of(ns.begin(), ns.end(), isAnchored))
+            return keptOut(p);
+        return !std::all_of(ns.begin(), ns.end(), isAnchored) || !keptOut(p);
     }
 
     // --- the body's surface (ImproveOptions::body, cutSurfaceNodes) ---
@@ -964,7 +982,7 @@ private:
                     offSurface = true;
                 }
             }
-            if (!p.allFinite() || keptOut(p) || (boundary && leavesBody(p0, p, pure, edgeScale)))
+            if (!p.allFinite() || misplaced({a, b}, p) || (boundary && leavesBody(p0, p, pure, edgeScale)))
                 continue;
             if (sideCount == 2 && std::abs(sideVolume(p, nullptr) - sideBefore) > 1e-12 * scale)
                 continue;
@@ -2005,7 +2023,7 @@ private:
                 if (!at && o.offSurface && !pure && distanceTo(p, faces, v, x0) <= tolerance)
                     at = p;
             }
-            if (!at || keptOut(*at) || (boundary && leavesBody(x0, *at, pure, edgeScale)) ||
+            if (!at || misplaced({v}, *at) || (boundary && leavesBody(x0, *at, pure, edgeScale)) ||
                 !allPositive(star, v, *at) || (onCrack && drifts(x0, *at)))
                 return std::nullopt;
             if (guard.refuses(*at))

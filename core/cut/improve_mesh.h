@@ -158,6 +158,13 @@ struct ImproveOptions {
     /// A box no node may move into (the anchored region, whose new nodes are anchored by
     /// position; reference positions).
     std::optional<std::array<Vec3, 2>> keepOut;
+    /// The region's fixed nodes (ImproveRegion::fixed) that lie in keepOut may be moved and
+    /// merged among themselves, within keepOut, so that they stay fixed (anchored by position)
+    /// where they go; never merged with a free node. Cuts that reach into the anchored region
+    /// leave slivers there that nothing else mends (issue 16: twenty partial strokes, where the
+    /// worst tets of every run below the bound had only anchored nodes). Without keepOut the
+    /// fixed nodes stay where they are.
+    bool moveAnchored = true;
 };
 
 /// The nodes the pass may move (seeds and their rings, minus fixed nodes), the fixed nodes among

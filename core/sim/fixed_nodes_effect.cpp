@@ -1,5 +1,7 @@
 #include "core/sim/fixed_nodes_effect.h"
 
+#include <algorithm>
+
 namespace resect {
 
 FixedNodesEffect::FixedNodesEffect(const TetMesh& mesh, Anchors anchors) : m_anchors(std::move(anchors)) {
@@ -29,6 +31,12 @@ void FixedNodesEffect::applyCut(const TetMesh& mesh, const CutChanges& changes) 
     // Added nodes are appended to the sorted list (anchors.h), so their positions are too.
     for (int n : m_anchors.applyCut(mesh, changes))
         m_positions.push_back(mesh.pos(n));
+    // Anchored nodes the change moved (the improvement moves them within the anchored box,
+    // ImproveOptions::moveAnchored) are held where they are now, not pulled back.
+    const std::vector<int>& nodes = m_anchors.nodes();
+    for (int n : changes.touchedNodes)
+        if (const auto it = std::lower_bound(nodes.begin(), nodes.end(), n); it != nodes.end() && *it == n)
+            m_positions[static_cast<std::size_t>(it - nodes.begin())] = mesh.pos(n);
 }
 
 } // namespace resect

@@ -732,6 +732,72 @@ private slots:
         QVERIFY(boxes >= 3);
     }
 
+    void anchoredNodesMoveWithinTheKeepOutBox_data() {
+        QTest::addColumn<bool>("moveAnchored");
+        QTest::newRow("anchored nodes may move") << true;
+        QTest::newRow("anchored nodes stay") << false;
+    }
+    void anchoredNodesMoveWithinTheKeepOutBox() {
+        QFETCH(bool, moveAnchored);
+        // A jittered 4^3 cube whose lower two layers of nodes (z <= 0.4) are anchored: fixed,
+        // and the keepOut box. A cut has left a short edge in there (b 0.1 of the way from a,
+        // both anchored). With moveAnchored the anchored nodes mend it among themselves: they
+        // stay in the box, no free node goes in, and no free node merges with an anchored
+        // one. Without it they stay bit-identical and the short edge stays (issue 16: the
+        // worst tets of twenty partial strokes were all anchored).
+        TetMesh start = jitteredCube(1, 4, 11, 0.25);
+        const int a = boxNode(4, 2, 2, 1), b = boxNode(4, 2, 1, 1);
+        place(start, b, start.ref(a) + 0.1 * (start.ref(b) - start.ref(a)));
+        computeLumpedMasses(start, kDensity);
+        QVERIFY2(meshViolations(start).isEmpty(), qPrintable(meshViolations(start)));
+        const std::array<Vec3, 2> box{Vec3(-1, -1, -1), Vec3(2, 2, 0.4)};
+        const auto inBox = [&](const Vec3& p) {
+            return (p.array() >= box[0].array()).all() && (p.array() <= box[1].array()).all();
+        };
+        std::vector<int> anchored;
+        for (int n = 0; n < start.nodeCount(); ++n)
+            if (inBox(start.ref(n)))
+                anchored.push_back(n);
+        QCOMPARE(static_cast<int>(anchored.size()), 2 * 25);
+        ImproveOptions o;
+        o.badRatio = 0.5;
+        o.shortEdge = 0.08;
+        o.density = kDensity;
+        o.keepOut = box;
+        o.moveAnchored = moveAnchored;
+        TetMesh m = start;
+        const ImproveRegion region = improveRegion(m, {a, b}, anchored, 2);
+        QVERIFY(region.nodes.size() > 0 && region.fixed.size() > 10);
+        const double worstBefore = summarizeQuality(m).minRadiusRatio;
+        const ImproveResult r = improveMesh(m, region, o);
+        QVERIFY2(meshViolations(m).isEmpty(), qPrintable(meshViolations(m)));
+        QVERIFY2(renumberingViolations(start, m, r).isEmpty(), qPrintable(renumberingViolations(start, m, r)));
+        const double worstAfter = summarizeQuality(m).minRadiusRatio;
+        if (!moveAnchored) {
+            for (int f : anchored) {
+                const int n = finalIndex(r, f);
+                QVERIFY2(n >= 0 && bitIdentical(m.ref(n), start.ref(f)) && bitIdentical(m.pos(n), start.pos(f)),
+                         qPrintable(QString("anchored node %1 moved").arg(f)));
+            }
+            qInfo("worst ratio %g -> %g (flips only)", worstBefore, worstAfter);
+            QVERIFY2(!(worstAfter > 2 * worstBefore), qPrintable(QString("worst ratio %1 -> %2").arg(worstBefore).arg(worstAfter)));
+            return;
+        }
+        qInfo("worst ratio %g -> %g", worstBefore, worstAfter);
+        QVERIFY2(worstAfter > 2 * worstBefore, qPrintable(QString("worst ratio %1 -> %2").arg(worstBefore).arg(worstAfter)));
+        QVERIFY(!movedOldNodes(start, m, r).empty());
+        for (int u = 0; u < start.nodeCount(); ++u) {
+            const int n = finalIndex(r, u);
+            if (n < 0)
+                continue;
+            const bool wasAnchored = std::binary_search(anchored.begin(), anchored.end(), u);
+            QVERIFY2(inBox(m.ref(n)) == wasAnchored,
+                     qPrintable(QString("node %1 (%2) ends %3 the box").arg(u).arg(wasAnchored ? "anchored" : "free").arg(wasAnchored ? "outside" : "inside")));
+        }
+        for (int n = start.nodeCount(); n < m.nodeCount(); ++n)
+            QVERIFY2(!inBox(m.ref(n)), qPrintable(QString("new node %1 in the box").arg(n)));
+    }
+
     void smoothingRaisesTheWorstRatio_data() {
         QTest::addColumn<bool>("alone");
         QTest::newRow("only the node") << true;

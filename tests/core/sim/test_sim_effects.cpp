@@ -107,6 +107,34 @@ private slots:
         QVERIFY(sim->findEffect("gravity") == nullptr);
     }
 
+    void movedAnchorsAreHeldWhereTheyAre() {
+        // The improvement may move an anchored node within the anchored box
+        // (ImproveOptions::moveAnchored) and then hands the simulation the touched nodes
+        // without a rebuild: the node is held where it is now. An anchored node the change did
+        // not touch is still held where it was.
+        TetMesh m = simBox(6, 2, 2, 0.2, 3);
+        EffectSettings settings;
+        settings.fixed.box = std::array<Vec3, 2>{Vec3(-1, -1, -1), Vec3(0, 3, 3)};
+        auto sim = make(m, {"deformation", "gravity", "fixed"}, settings);
+        const std::vector<int> anchored = static_cast<FixedNodesEffect*>(sim->findEffect("fixed"))->nodes();
+        QVERIFY(anchored.size() >= 4);
+        const int moved = anchored[1], other = anchored[2];
+        const Vec3 to = m.pos(moved) + Vec3(0, 0.01, 0.01), otherBefore = m.pos(other);
+        const Vec3 stale = otherBefore + Vec3(0, 0.01, 0);
+        m.positions()[moved] = to;
+        m.referencePositions()[moved] = to;
+        m.positions()[other] = stale;  // (not reported as touched)
+        CutChanges changes;
+        changes.firstNewNode = m.nodeCount();
+        changes.firstNewTet = m.tetCount();
+        changes.touchedNodes = {moved};
+        sim->applyCut(changes);
+        QVERIFY(run(*sim, 20).ok());
+        QCOMPARE(m.pos(moved), to);
+        QCOMPARE(m.velocities()[moved], Vec3::Zero());
+        QCOMPARE(m.pos(other), otherBefore);
+    }
+
     void fixedNodesDoNotMove_data() {
         QTest::addColumn<Integrator>("integrator");
         QTest::addColumn<double>("dtFactor");
