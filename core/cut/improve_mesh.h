@@ -5,7 +5,7 @@
 // cut's neighbourhood and in time proportional to it.
 //
 // Four operations, repeated for a few sweeps over the region (the seed nodes and `rings` rings
-// around them, anchored nodes excluded):
+// around them; anchored nodes only among themselves and within the anchored box, moveAnchored):
 //  * Edge collapse. Edges shorter than `shortEdge`, and the edges of tets whose radius ratio is
 //    below `badRatio`, are collapsed where the link condition holds (Dey et al.; the mesh
 //    boundary is closed with a virtual vertex, so a boundary node never becomes interior nor
@@ -155,7 +155,7 @@ struct ImproveOptions {
     /// edges on test_resection_quality's stroke rows (0.1 without the guard).
     double overlapSlack = 0.02;
     double density = 1e-3;      ///< g/mm^3, for the masses of Eq. 3
-    /// A box no node may move into (the anchored region, whose new nodes are anchored by
+    /// A box no free node may move into (the anchored region, whose new nodes are anchored by
     /// position; reference positions).
     std::optional<std::array<Vec3, 2>> keepOut;
     /// The region's fixed nodes (ImproveRegion::fixed) that lie in keepOut may be moved and
@@ -171,7 +171,7 @@ struct ImproveOptions {
 /// them, and the tets that may change (those of both).
 struct ImproveRegion {
     std::vector<int> nodes;
-    std::vector<int> fixed;  ///< fixed nodes within the rings: never moved, but their tets may be flipped
+    std::vector<int> fixed;  ///< fixed nodes within the rings: their tets may be flipped (moved: moveAnchored)
     std::vector<int> tets;   ///< the tets of both
 };
 ImproveRegion improveRegion(const TetMesh& mesh, const std::vector<int>& seeds, const std::vector<int>& fixedNodes,
