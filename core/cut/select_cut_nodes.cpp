@@ -186,6 +186,20 @@ struct CutNodeDistances {
     bool isCut(int n) const { return (*node)[n] & kCut; }
 };
 
+/// Makes node n a cut node at `distance` from the sweep, unless one of its tets already has
+/// three (rule "no tet gets a fourth cut node"); false if refused.
+bool acceptCutNode(const TetMesh& mesh, int n, double distance, IndexMarks<std::uint8_t>& node,
+                   IndexMarks<std::uint8_t>& cutNodesOfTet, CutNodeDistances& cut) {
+    for (int t : mesh.nodeTets(n))
+        if (cutNodesOfTet[t] >= 3)
+            return false;
+    for (int t : mesh.nodeTets(n))
+        cutNodesOfTet.set(t, static_cast<std::uint8_t>(cutNodesOfTet[t] + 1));
+    node.set(n, static_cast<std::uint8_t>(node[n] | kCut));
+    cut.chosen.push_back({n, distance});
+    return true;
+}
+
 /// Rules "a node exactly on the sweep is always a cut node" and "the nearer end within d"
 /// (section 4.3): eligible nodes on the sweep first (distance 0), then every crossed edge
 /// nominates its nearer end if it is closer than d to the sweep; nominees are accepted
@@ -196,16 +210,7 @@ CutNodeDistances chooseCutNodes(const TetMesh& mesh, const SweepSurface& sweep,
                                 IndexMarks<std::uint8_t>& cutNodesOfTet) {
     CutNodeDistances cut;
     cut.node = &node;
-    const auto accept = [&](int n, double distance) {
-        for (int t : mesh.nodeTets(n))
-            if (cutNodesOfTet[t] >= 3)
-                return false;
-        for (int t : mesh.nodeTets(n))
-            cutNodesOfTet.set(t, static_cast<std::uint8_t>(cutNodesOfTet[t] + 1));
-        node.set(n, static_cast<std::uint8_t>(node[n] | kCut));
-        cut.chosen.push_back({n, distance});
-        return true;
-    };
+    const auto accept = [&](int n, double distance) { return acceptCutNode(mesh, n, distance, node, cutNodesOfTet, cut); };
     for (int n : crossed.onSweepNodes)
         if (!(node[n] & kIneligible))
             accept(n, 0.0);
@@ -291,17 +296,11 @@ void matchTwinCutNodes(const TetMesh& mesh, const SweepSurface& sweep, const Int
             for (int n : copies) {
                 if (isCut(n))
                     continue;
-                bool fits = !(node[n] & kIneligible);
-                for (int t : mesh.nodeTets(n))
-                    fits = fits && cutNodesOfTet[t] < 3;
-                if (!fits) {
+                if ((node[n] & kIneligible) ||
+                    !acceptCutNode(mesh, n, sweep.closestPoint(mesh.pos(n)).distance, node, cutNodesOfTet, cut)) {
                     matched = false;
                     break;
                 }
-                for (int t : mesh.nodeTets(n))
-                    cutNodesOfTet.set(t, static_cast<std::uint8_t>(cutNodesOfTet[t] + 1));
-                node.set(n, static_cast<std::uint8_t>(node[n] | kCut));
-                cut.chosen.push_back({n, sweep.closestPoint(mesh.pos(n)).distance});
             }
             // (A node exactly on the sweep stays a cut node: its crossings are at it.)
             if (matched || std::any_of(copies.begin(), copies.end(), [&](int n) { return isCut(n) && (node[n] & kOnSweep); }))

@@ -28,12 +28,10 @@ bool hangsOn(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
 }
 
 bool hangsOnBoundaryFaceAt(const TetMesh& mesh, const Vec3& p, int a, int b) {
-    std::vector<int> sharing;
-    for (int t : mesh.nodeTets(a)) {
-        const Tet& q = mesh.tet(t);
-        if (std::find(q.begin(), q.end(), b) == q.end())
-            continue;
-        for (int c : q) {
+    std::vector<int> ring, sharing;
+    mesh.edgeTets(a, b, ring);
+    for (int t : ring) {
+        for (int c : mesh.tet(t)) {
             if (c == a || c == b)
                 continue;
             mesh.faceTets(a, b, c, sharing);
