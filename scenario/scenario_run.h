@@ -59,8 +59,11 @@ Status planLoadedTissue(const Scenario& scenario, const TissueSpec& tissue, TetM
                         ReplayPlan& plan);
 
 /// The nodes of `mesh` whose reference position lies in one of the tissue's fixed regions
-/// (bounds included), sorted: the anchors replay gives the tissue (no box: nodes a later cut
-/// adds are anchored only as copies of anchored ones).
+/// (bounds included), sorted: the anchors replay gives the tissue. With one fixed region (every
+/// example scenario) the region is also the anchors' box, as `resect cut --fix-box` makes it:
+/// nodes a later cut or the improvement puts in it are anchored too, and the improvement may
+/// move anchored nodes within it (ImproveOptions::keepOut, moveAnchored). With several, nodes a
+/// later cut adds are anchored only as copies of anchored ones.
 FixedSelection regionAnchors(const TissueSpec& tissue, const TetMesh& mesh);
 
 /// What starting replay's simulation of `scenario` on `tissue` (the first tissue's spec

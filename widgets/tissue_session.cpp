@@ -61,7 +61,7 @@ Status makeBaseTissue(const Scenario& scenario, TetMesh mesh, TriangleSurface su
 /// would make) under a new base id, so that every state derived from it is told apart.
 Status anchoredBase(const Scenario& scenario, std::shared_ptr<const TissueState>& base) {
     const FixedSelection anchors = regionAnchors(scenario.tissues.front(), base->mesh());
-    if (anchors.nodes == base->tissue.anchors().nodes())
+    if (anchors.nodes == base->tissue.anchors().nodes() && anchors.box == base->tissue.anchors().box())
         return Status::success();
     auto state = std::make_shared<TissueState>(*base);
     if (Status s = state->tissue.setAnchors(anchors); !s.ok())

@@ -5,6 +5,8 @@
 #include "scenario/replay.h"
 #include "scenario/scenario_run.h"
 
+#include "scenario/scenario_document.h"
+
 #include "core/mesh/box_mesh.h"
 #include "core/mesh/masses.h"
 
@@ -18,9 +20,9 @@ using namespace resect;
 
 namespace {
 
-/// The box [0, 4]^3 mm (4 cells a side), anchored at the bottom, cut at z = 2.3 by a stroke
-/// of a straight 2-point tool moved along x (poses every 10 ms over 50 ms).
-ReplayPlan boxPlan(bool withTool) {
+/// The box [0, 4]^3 mm (4 cells a side), anchored at the bottom, cut at z = height by a
+/// stroke of a straight 2-point tool moved along x (poses every 10 ms over 50 ms).
+ReplayPlan boxPlan(bool withTool, double height = 2.3) {
     ReplayPlan plan;
     plan.mesh = makeBoxTetMesh(Vec3::Zero(), Vec3::Constant(4), 4, 4, 4);
     computeLumpedMasses(plan.mesh, plan.material.density);
@@ -29,7 +31,7 @@ ReplayPlan boxPlan(bool withTool) {
     for (int i = 0; i <= 5; ++i) {
         const double x = -1 + 6.0 * i / 5;
         stroke.times.push_back(0.01 * i);
-        stroke.tool.push_back({Vec3(x, -1, 2.3 + 0.01 * x), Vec3(x, 5, 2.3 + 0.01 * x)});
+        stroke.tool.push_back({Vec3(x, -1, height + 0.01 * x), Vec3(x, 5, height + 0.01 * x)});
     }
     if (!SweepSurface::fromCurves(stroke.tool, stroke.sweep).ok())
         qFatal("bad sweep");
@@ -106,6 +108,57 @@ private slots:
         const double slack = ImproveOptions{}.maxDeviation * std::sqrt(2.0);
         QVERIFY2(top <= 2.34 + slack, qPrintable(QString::number(top)));
         QCOMPARE(out.inverted, 0);
+    }
+
+    void oneFixedRegionIsTheAnchorsBox() {
+        // A scenario's one fixed region anchors like `resect cut --fix-box`: the nodes in it,
+        // and it is the anchors' box. Several regions give their nodes and no box.
+        const TetMesh mesh = makeBoxTetMesh(Vec3::Zero(), Vec3::Constant(4), 4, 4, 4);
+        TissueSpec spec;
+        spec.fixedRegions = {FixedRegion{Vec3::Constant(-1), Vec3(5, 5, 1.1), {}}};
+        const FixedSelection one = regionAnchors(spec, mesh);
+        QCOMPARE(one.nodes.size(), std::size_t(50));  // the layers z = 0 and z = 1, 5 x 5 each
+        QVERIFY(one.box);
+        QCOMPARE((*one.box)[0], Vec3::Constant(-1));
+        QCOMPARE((*one.box)[1], Vec3(5, 5, 1.1));
+        spec.fixedRegions.push_back(FixedRegion{Vec3(-1, -1, 3.9), Vec3(5, 5, 5), {}});
+        const FixedSelection two = regionAnchors(spec, mesh);
+        QCOMPARE(two.nodes.size(), std::size_t(75));
+        QVERIFY(!two.box);
+    }
+
+    void aCutThroughTheFixedRegionAddsAnchoredNodes() {
+        // A stroke through the fixed region (z = 0.55, between the node layers z = 0 and 1 that
+        // it holds) splits the edges it crosses there. The new nodes lie in the region, so the
+        // fixed effect holds them, as it holds the old ones: under gravity, every node in the
+        // region stays where it is. With the region's nodes only (no box, as scenarios anchored
+        // before), the new nodes were free and sagged.
+        ReplayPlan plan = boxPlan(false, 0.55);
+        TissueSpec spec;
+        spec.fixedRegions = {FixedRegion{Vec3::Constant(-1), Vec3(5, 5, 1.1), {}}};
+        plan.anchors = regionAnchors(spec, plan.mesh);
+        const int inRegionBefore = static_cast<int>(plan.anchors.nodes.size());
+        plan.resected = ResectedPieces::Keep;
+        ReplayOutcome out;
+        const Status s = replay(std::move(plan), out);
+        QVERIFY2(s.ok(), s.message().c_str());
+        QVERIFY2(out.cutFailure.empty(), out.cutFailure.c_str());
+        QVERIFY(out.finite);
+        QVERIFY(out.steps > 0);
+        int inRegion = 0;
+        double moved = 0, movedAbove = 0;
+        for (int n = 0; n < out.mesh.nodeCount(); ++n) {
+            const double d = (out.mesh.pos(n) - out.mesh.ref(n)).norm();
+            if (spec.fixedRegions.front().contains(out.mesh.ref(n))) {
+                ++inRegion;
+                moved = std::max(moved, d);
+            } else {
+                movedAbove = std::max(movedAbove, d);
+            }
+        }
+        QVERIFY2(inRegion > inRegionBefore, qPrintable(QString("%1 nodes in the region, %2 before").arg(inRegion).arg(inRegionBefore)));
+        QCOMPARE(moved, 0.0);
+        QVERIFY2(movedAbove > 1e-6, qPrintable(QString::number(movedAbove)));  // (gravity acts on the rest)
     }
 
     void sameResultTwice() {
