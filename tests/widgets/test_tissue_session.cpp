@@ -131,6 +131,8 @@ private slots:
         const auto base = session.base();
         QVERIFY(!plan.anchors.nodes.empty());
         QCOMPARE(base->tissue.anchors().nodes(), plan.anchors.nodes);
+        // (and the one fixed region is the anchors' box: nodes cuts put in it are anchored)
+        QVERIFY(plan.anchors.box && base->tissue.anchors().box() == plan.anchors.box);
         QCOMPARE(base->mesh().tetCount(), plan.mesh.tetCount());
 
         // Current: the three strokes cut in order, bit-identical to cutting directly.
@@ -256,6 +258,7 @@ private slots:
         QSignalSpy base(&session, &TissueSession::baseChanged);
         QSignalSpy current(&session, &TissueSession::currentChanged);
         FixedRegion head = doc.fixedRegions().front();
+        const FixedRegion original = head;
         head.min.z() = 17;
         head.max.z() = 30;
         QVERIFY(doc.setFixedRegion(0, head));
@@ -274,6 +277,7 @@ private slots:
         QVERIFY(!headAnchors.empty() && headAnchors != baseAnchors);
         for (int n : headAnchors)
             QVERIFY(head.contains(loaded->mesh().ref(n)));
+        QVERIFY(session.base()->tissue.anchors().box() == (std::array<Vec3, 2>{head.min, head.max}));
         Tissue direct;
         QVERIFY(cutDirectly(doc.scenario(), direct).ok());
         QCOMPARE(tissueDifference(session.current()->tissue, direct), QString());
@@ -284,10 +288,21 @@ private slots:
             chipBottom = std::min(chipBottom, p.z());
         QVERIFY2(chipBottom < 1, qPrintable(QString::number(chipBottom)));
 
+        // A region grown where there are no nodes holds the same nodes, but it is another box
+        // (nodes a cut puts in the new part are anchored): the base is anchored again. (The
+        // two edits of the region are one step to undo.)
+        FixedRegion wider = head;
+        wider.max.z() = 1e3;
+        QVERIFY(doc.setFixedRegion(0, wider));
+        QVERIFY(session.waitForIdle(kWaitMs));
+        QCOMPARE(session.base()->tissue.anchors().nodes(), headAnchors);
+        QVERIFY(session.base()->tissue.anchors().box() == (std::array<Vec3, 2>{wider.min, wider.max}));
+
         // Undo: back to the base's anchors, bit-identical to the state before.
         doc.undoStack()->undo();
         QVERIFY(session.waitForIdle(kWaitMs));
         QCOMPARE(session.base()->tissue.anchors().nodes(), baseAnchors);
+        QVERIFY(session.base()->tissue.anchors().box() == (std::array<Vec3, 2>{original.min, original.max}));
         direct = Tissue();
         QVERIFY(cutDirectly(doc.scenario(), direct).ok());
         QCOMPARE(tissueDifference(session.current()->tissue, direct), QString());
