@@ -87,6 +87,7 @@ enum NodeFlag : std::uint8_t {
     kIneligible = 2, ///< a node of a partially cut tet: never a cut node (markPartialTets)
     kCut = 4,        ///< chosen as a cut node (chooseCutNodes)
     kNominated = 8,  ///< nominated by a crossed edge (chooseCutNodes)
+    kNear = 16,      ///< within SelectOptions::nearFraction of d of the sweep (nearNodes)
 };
 
 /// The tets the sweep touches: on a crossed edge or at a node on the sweep.
@@ -159,22 +160,56 @@ void markPartialTets(const TetMesh& mesh, const IntersectedEdges& crossed, Touch
             if (touched.partial[k])
                 continue;
             const Tet& q = mesh.tet(touched.tets[k]);
-            std::uint8_t onCut = 0;
-            for (int i = 0; i < 4; ++i)
-                if (node[q[i]] == kOnSweep) // on the sweep and still eligible
+            // Nodes on the sweep and near nodes that are still eligible count as cut nodes;
+            // the crossings at near nodes are not splits (a cut node's edges are not split).
+            std::uint8_t onCut = 0, crossedMask = touched.crossedMask[k];
+            for (int i = 0; i < 4; ++i) {
+                const std::uint8_t f = node[q[i]];
+                if (f & kIneligible)
+                    continue;
+                if (f & kOnSweep)
                     onCut |= static_cast<std::uint8_t>(1 << i);
-            if (isComplete(touched.crossedMask[k], onCut))
+                else if (f & kNear) {
+                    onCut |= static_cast<std::uint8_t>(1 << i);
+                    for (int e = 0; e < 6; ++e)
+                        if (kTetEdges[e][0] == i || kTetEdges[e][1] == i)
+                            crossedMask &= static_cast<std::uint8_t>(~(1 << e));
+                }
+            }
+            if (isComplete(crossedMask, onCut))
                 continue;
             touched.partial[k] = 1;
             for (int v : q) {
                 if (node[v] & kIneligible)
                     continue;
                 node.set(v, static_cast<std::uint8_t>(node[v] | kIneligible));
-                if (node[v] & kOnSweep)
+                if (node[v] & (kOnSweep | kNear))
                     changed = true;
             }
         }
     }
+}
+
+/// Near nodes (rule "near nodes", select_cut_nodes.h): the ends of crossed edges closer to the
+/// sweep than options.nearFraction * options.d, not on it, with their distances, nearest first
+/// (ties by node index).
+std::vector<std::pair<double, int>> nearNodes(const TetMesh& mesh, const SweepSurface& sweep, const IntersectedEdges& crossed,
+                                              const SelectOptions& options, IndexMarks<std::uint8_t>& seen) {
+    std::vector<std::pair<double, int>> near;
+    const double bound = options.nearFraction * options.d;
+    if (!options.allowCutNodes || !(bound > 0))
+        return near;
+    for (const EdgeCrossing& e : crossed.edges)
+        for (int n : {e.a, e.b}) {
+            if (seen[n])
+                continue;
+            seen.set(n, 1);
+            const double dist = sweep.closestPoint(mesh.pos(n)).distance;
+            if (dist > 0 && dist < bound)
+                near.push_back({dist, n});
+        }
+    std::sort(near.begin(), near.end());
+    return near;
 }
 
 /// The chosen cut nodes: per node whether it is one (kCut in the selection's node flags), and
@@ -206,6 +241,7 @@ bool acceptCutNode(const TetMesh& mesh, int n, double distance, IndexMarks<std::
 /// nearest first (ties by node index) unless a tet would get a fourth cut node.
 CutNodeDistances chooseCutNodes(const TetMesh& mesh, const SweepSurface& sweep,
                                 const IntersectedEdges& crossed, const SelectOptions& options,
+                                const std::vector<std::pair<double, int>>& near,
                                 IndexMarks<std::uint8_t>& node,
                                 IndexMarks<std::uint8_t>& cutNodesOfTet) {
     CutNodeDistances cut;
@@ -214,6 +250,9 @@ CutNodeDistances chooseCutNodes(const TetMesh& mesh, const SweepSurface& sweep,
     for (int n : crossed.onSweepNodes)
         if (!(node[n] & kIneligible))
             accept(n, 0.0);
+    for (const auto& [dist, n] : near)
+        if (!(node[n] & (kIneligible | kCut)))
+            accept(n, dist);
     if (!options.allowCutNodes || !(options.d > 0))
         return cut;
     std::vector<std::pair<double, int>> order;
@@ -472,10 +511,36 @@ CutSelection selectCutNodes(const TetMesh& mesh, const SweepSurface& sweep,
     const auto countScope = cutNodesOfTet.use(mesh.tetCount());
     // The rules of select_cut_nodes.h, in order: partial tets first (their nodes are never cut
     // nodes), then cut nodes, then cut edges, then the codes and sides of every affected tet.
-    TouchedTets touched = gatherTouchedTets(mesh, crossed, tetPosition);
-    markPartialTets(mesh, crossed, touched, nodeFlags);
-    CutNodeDistances cut = chooseCutNodes(mesh, sweep, crossed, options, nodeFlags, cutNodesOfTet);
-    matchTwinCutNodes(mesh, sweep, crossed, options.minEdgeFraction, nodeFlags, cutNodesOfTet, cut);
+    std::vector<std::pair<double, int>> near = nearNodes(mesh, sweep, crossed, options, nodeFlags);
+    nodeFlags.reset();
+    // A near node counts as a cut node when tets are classified (its crossings are not splits),
+    // so it must become one: where one does not (a tet would get a fourth cut node, or its
+    // twin on the other wall of a crack cannot be one), the selection is made again without it.
+    TouchedTets touched;
+    CutNodeDistances cut;
+    for (;;) {
+        for (const auto& [dist, n] : near)
+            nodeFlags.set(n, kNear);
+        touched = gatherTouchedTets(mesh, crossed, tetPosition);
+        markPartialTets(mesh, crossed, touched, nodeFlags);
+        std::vector<int> eligibleNear;
+        for (const auto& [dist, n] : near)
+            if (!(nodeFlags[n] & kIneligible))
+                eligibleNear.push_back(n);
+        cut = chooseCutNodes(mesh, sweep, crossed, options, near, nodeFlags, cutNodesOfTet);
+        matchTwinCutNodes(mesh, sweep, crossed, options.minEdgeFraction, nodeFlags, cutNodesOfTet, cut);
+        std::vector<int> dropped;
+        for (int n : eligibleNear)
+            if (!cut.isCut(n))
+                dropped.push_back(n);
+        if (dropped.empty())
+            break;
+        std::sort(dropped.begin(), dropped.end());
+        std::erase_if(near, [&](const auto& c) { return std::binary_search(dropped.begin(), dropped.end(), c.second); });
+        nodeFlags.reset();
+        tetPosition.reset();
+        cutNodesOfTet.reset();
+    }
     CutSelection sel;
     listCutNodes(cut, sel);
     listCutEdges(mesh, crossed, cut, options.minEdgeFraction, sel);
