@@ -401,12 +401,14 @@ private:
         return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
     }
     /// Whether the nodes `ns`, merged or moved to p, may not go there: free nodes stay out of
-    /// keepOut, anchored ones (moveAnchored) in it, and the two kinds are not merged.
+    /// keepOut, anchored ones (moveAnchored) in it; a free node merged with an anchored one
+    /// goes into it where ImproveOptions::mergeFreeIntoAnchored allows that (the merged node
+    /// is anchored then), else the two kinds are not merged.
     bool misplaced(std::initializer_list<int> ns, const Vec3& p) const {
         const auto isAnchored = [&](int n) { return anchored.count(n) > 0; };
         if (std::none_of(ns.begin(), ns.end(), isAnchored))
             return keptOut(p);
-        return !std::all_of(ns.begin(), ns.end(), isAnchored) || !keptOut(p);
+        return (!o.mergeFreeIntoAnchored && !std::all_of(ns.begin(), ns.end(), isAnchored)) || !keptOut(p);
     }
 
     // --- the body's surface (ImproveOptions::body, cutSurfaceNodes) ---
@@ -815,10 +817,79 @@ private:
         double worst = -1;
     };
 
+    /// Where the link condition refuses a short edge (a, b) of the boundary because of a pit at
+    /// it (ImproveOptions::fillPits), the pit is filled and the edge collapsed keeping the
+    /// volume the mesh had; if that fails, the filling tet goes again. False where there is no
+    /// such pit.
+    bool collapseThroughPit(int a, int b, bool coarsen) {
+        const std::optional<Tet> pit = pitAt(a, b);
+        if (!pit || !keepsTetsWithout(*pit, a, b))
+            return false;
+        replaceTets({}, {*pit});
+        const int slot = m.tetCount() - 1;
+        if (linkCondition(a, b) && tryCollapse(a, b, true, coarsen, slot)) {
+            ++r.pitsFilled;
+            return true;
+        }
+        replaceTets({slot}, {});
+        return false;
+    }
+
+    /// A pit at edge (a, b): nodes x and c with boundary faces (a, b, x), (a, x, c) and
+    /// (b, x, c) (none a glued crack face) where no tet has a, b and c: a void the shape of the
+    /// tet (x, a, b, c), which is returned oriented if it is positive in both configurations.
+    std::optional<Tet> pitAt(int a, int b) const {
+        const std::vector<Face> fa = boundaryFacesAt(starOf(a), a);
+        const std::vector<Face> fb = boundaryFacesAt(starOf(b), b);
+        const auto has = [](const Face& f, int v) { return std::find(f.nodes.begin(), f.nodes.end(), v) != f.nodes.end(); };
+        const auto third = [](const Face& f, int u, int v) {
+            for (int w : f.nodes)
+                if (w != u && w != v)
+                    return w;
+            return -1;
+        };
+        for (const Face& f : fa) {
+            if (f.crack || !has(f, b))
+                continue;
+            const int x = third(f, a, b);
+            for (const Face& g : fa) {
+                if (g.crack || !has(g, x) || has(g, b))
+                    continue;
+                const int c = third(g, a, x);
+                const bool closed = std::any_of(fb.begin(), fb.end(), [&](const Face& h) { return !h.crack && has(h, x) && has(h, c); });
+                const bool mouthIsFace = std::any_of(m.nodeTets(a).begin(), m.nodeTets(a).end(),
+                                                     [&](int t) { return contains(m.tet(t), b) && contains(m.tet(t), c); });
+                if (!closed || mouthIsFace)
+                    continue;
+                Tet v{x, a, b, c};
+                if (orient3d(m.ref(v[0]), m.ref(v[1]), m.ref(v[2]), m.ref(v[3])) < 0)
+                    std::swap(v[2], v[3]);
+                if (orient3d(m.ref(v[0]), m.ref(v[1]), m.ref(v[2]), m.ref(v[3])) > 0 &&
+                    orient3d(m.pos(v[0]), m.pos(v[1]), m.pos(v[2]), m.pos(v[3])) > 0)
+                    return v;
+            }
+        }
+        return std::nullopt;
+    }
+
+    /// Whether each node of q other than a and b is in a tet without edge (a, b): the collapse
+    /// removes the edge's tets, and a node with no other would be left in none.
+    bool keepsTetsWithout(const Tet& q, int a, int b) const {
+        return std::all_of(q.begin(), q.end(), [&](int c) {
+            return c == a || c == b || std::any_of(m.nodeTets(c).begin(), m.nodeTets(c).end(), [&](int u) {
+                       return !(contains(m.tet(u), a) && contains(m.tet(u), b));
+                   });
+        });
+    }
+
     /// Collapses edge (a, b) into a (b disappears) if a placement is allowed (see the header).
-    bool tryCollapse(int a, int b, bool isShort, bool coarsen = false) {
+    /// With `pit` >= 0, the slot of the tet that fills a pit at the edge (collapseThroughPit):
+    /// the volume kept is the mesh's without it.
+    bool tryCollapse(int a, int b, bool isShort, bool coarsen = false, int pit = -1) {
         if (!editable.count(a) || !editable.count(b) || !alive(a) || !alive(b))
             return false;
+        if (o.fillPits && isShort && pit < 0 && !linkCondition(a, b))
+            return collapseThroughPit(a, b, coarsen);
         std::vector<int> tetsA(m.nodeTets(a).begin(), m.nodeTets(a).end());
         std::vector<int> tetsB(m.nodeTets(b).begin(), m.nodeTets(b).end());
         std::vector<int> shell;
@@ -832,8 +903,10 @@ private:
         double volumeBefore = 0, worstBefore = 1;
         for (int t : tetsA) {
             before.push_back(m.tet(t));
-            volumeBefore += m.referenceVolume(t);
-            worstBefore = std::min(worstBefore, tetRatio(t));
+            if (t != pit) {  // (a pit's filling tet is no part of the mesh's volume)
+                volumeBefore += m.referenceVolume(t);
+                worstBefore = std::min(worstBefore, tetRatio(t));
+            }
             if (std::find(shell.begin(), shell.end(), t) == shell.end())
                 after.push_back(m.tet(t));
         }
@@ -896,7 +969,12 @@ private:
         const GuardEdge guardScope(*this, b, -1);
         // (Only on the mesh's boundary: a star closed all round, glued crack faces included,
         // fills the same space wherever its node goes.)
-        OverlapGuard guard(*this, before, after, a, outer && o.overlapGuard);
+        std::vector<Tet> beforeWithoutPit;
+        if (pit >= 0) {
+            beforeWithoutPit = before;
+            beforeWithoutPit.erase(std::find(beforeWithoutPit.begin(), beforeWithoutPit.end(), m.tet(pit)));
+        }
+        OverlapGuard guard(*this, pit >= 0 ? beforeWithoutPit : before, after, a, outer && o.overlapGuard);
         Placement best;
         std::vector<Placement> candidates;
         const Vec3 pa = m.ref(a), pb = m.ref(b);
@@ -1079,7 +1157,7 @@ private:
                 cand.ref = *x;
                 cand.worst = worstAround(after, a, *x);
                 mapToCurrent(before, *x, cand.pos, cand.vel);
-                bool ok = acceptable(cand.worst) && allPositive(after, a, *x) && allPositive(after, a, cand.pos, true);
+                bool ok = acceptable(cand.worst) && !misplaced({a, b}, *x) && allPositive(after, a, *x) && allPositive(after, a, cand.pos, true);
                 if (ok && boundary) {
                     const std::vector<Face> newBoundary = boundaryFacesAt(after, a, b, a);
                     ok = !(boundaryA && distanceTo(pa, newBoundary, a, *x) > tolerance) &&
@@ -1152,6 +1230,8 @@ private:
         for (int t : shell)
             removeTet(t);
         mergedInto[b] = a;
+        if (anchored.count(b))
+            anchored.insert(a);  // (a free node merged with an anchored one, in keepOut)
         cutMarkOf[a] = onCut(a) || onCut(b);
         moved.erase(b);
         touched.erase(b);

@@ -160,11 +160,25 @@ struct ImproveOptions {
     std::optional<std::array<Vec3, 2>> keepOut;
     /// The region's fixed nodes (ImproveRegion::fixed) that lie in keepOut may be moved and
     /// merged among themselves, within keepOut, so that they stay fixed (anchored by position)
-    /// where they go; never merged with a free node. Cuts that reach into the anchored region
-    /// leave slivers there that nothing else mends (issue 16: twenty partial strokes, where the
-    /// worst tets of every run below the bound had only anchored nodes). Without keepOut the
-    /// fixed nodes stay where they are.
+    /// where they go. Cuts that reach into the anchored region leave slivers there that nothing
+    /// else mends (issue 16: twenty partial strokes, where the worst tets of every run below
+    /// the bound had only anchored nodes). Without keepOut the fixed nodes stay where they are.
     bool moveAnchored = true;
+    /// With moveAnchored, a free node may also merge with an anchored one, the merged node placed
+    /// in keepOut (it is anchored there, by position): a short edge across the box's border,
+    /// which neither kind can mend alone (issue 16: the myoma's seed 8 partial strokes with near
+    /// nodes; the lattice box's seed 7 partial strokes rise from 0.12 to 0.41 times the input's
+    /// worst ratio). Off by default (README "Pits and the anchored box's border").
+    bool mergeFreeIntoAnchored = false;
+    /// Fill pits for a collapse (issue 16; off by default, README "Pits and the anchored box's
+    /// border"): a short edge (a, b) of the boundary whose collapse the link condition refuses
+    /// only because the edge is the mouth of a pit (a void the shape of one tet (x, a, b, c):
+    /// boundary faces (a, b, x), (a, x, c) and (b, x, c), none a glued crack face, and no tet
+    /// with a, b and c) is collapsed with the pit filled first, the merged node placed to keep
+    /// the volume the mesh had (the pit's is not added). Where crack walls meet at a junction,
+    /// independent collapses on the walls leave such pits, and the link condition then keeps
+    /// their short mouths for good (the myoma's seed 7 stroke row with near nodes, pass 15).
+    bool fillPits = false;
 };
 
 /// The nodes the pass may move (seeds and their rings, minus fixed nodes), the fixed nodes among
@@ -186,6 +200,7 @@ struct ImproveResult {
     int gluedNodes = 0;        ///< copies glued to their twins for the pass (see glueCracks)
     int ungluedPasses = 0;     ///< passes that ran the sweeps again unglued (weakRatio, weakEdge)
     int ungluedNodes = 0;      ///< copies given back to a side of a crack after it
+    int pitsFilled = 0;        ///< collapses through a filled pit (fillPits)
     double worstBefore = 1, worstAfter = 1;  ///< smallest radius ratio over the region's tets
     /// Final indices of the nodes that moved (smoothing, merged nodes) and of every node whose
     /// tets changed (their masses were updated); sorted.

@@ -18,6 +18,7 @@
 #include "core/mesh/topology.h"
 #include "core/mesh/validity.h"
 #include "improve_regressions.h"
+#include "pit_regressions.h"
 
 #include <QStringList>
 #include <QTest>
@@ -1094,6 +1095,106 @@ private slots:
             QVERIFY(fixed[i] >= 0);
             QCOMPARE(m.ref(fixed[i]), before[c.fixedNodes[i]]);
         }
+    }
+
+    void aShortEdgeAcrossTheBoxBorderMergesIntoTheBox_data() {
+        QTest::addColumn<bool>("merge");
+        QTest::newRow("mergeFreeIntoAnchored") << true;
+        QTest::newRow("not (the default)") << false;
+    }
+    void aShortEdgeAcrossTheBoxBorderMergesIntoTheBox() {
+        // A jittered 4^3 cube whose nodes with z <= 0.3 are anchored (the keepOut box); a cut has
+        // left free node b 0.05 cells above anchored node a, across the box's top. With
+        // mergeFreeIntoAnchored the edge is collapsed, the merged node in the box (anchored by
+        // position), the volume and Eq. 3 kept; without it the two stay apart, each on its side
+        // (smoothing may lengthen the edge).
+        QFETCH(bool, merge);
+        QVERIFY(!ImproveOptions{}.mergeFreeIntoAnchored);
+        TetMesh start = jitteredCube(1, 4, 3, 0.2);
+        const std::array<Vec3, 2> box{Vec3(-1, -1, -1), Vec3(2, 2, 0.3)};
+        const int a = boxNode(4, 2, 2, 1), b = boxNode(4, 2, 2, 2);
+        place(start, a, Vec3(0.5, 0.5, 0.29));
+        place(start, b, Vec3(0.5, 0.5, 0.29 + 0.05 * 0.25));
+        computeLumpedMasses(start, kDensity);
+        QVERIFY2(meshViolations(start).isEmpty(), qPrintable(meshViolations(start)));
+        const auto inBox = [&](const Vec3& p) {
+            return (p.array() >= box[0].array()).all() && (p.array() <= box[1].array()).all();
+        };
+        std::vector<int> anchored;
+        for (int n = 0; n < start.nodeCount(); ++n)
+            if (inBox(start.ref(n)))
+                anchored.push_back(n);
+        QVERIFY(std::binary_search(anchored.begin(), anchored.end(), a) && !inBox(start.ref(b)));
+        ImproveOptions o;
+        o.shortEdge = 0.03;  // (a, b) alone: 0.0125; the cube's edges are 0.25 x (1 - 2 * 0.2) and up
+        o.density = kDensity;
+        o.keepOut = box;
+        o.mergeFreeIntoAnchored = merge;
+        TetMesh m = start;
+        const ImproveResult r = improveMesh(m, improveRegion(m, {a, b}, anchored, 2), o);
+        QVERIFY2(brokenInvariants(start, m, r).isEmpty(), qPrintable(brokenInvariants(start, m, r)));
+        QVERIFY2(meshViolations(m).isEmpty(), qPrintable(meshViolations(m)));
+        if (!merge) {
+            QVERIFY(finalIndex(r, a) != finalIndex(r, b));
+            QVERIFY(inBox(m.ref(finalIndex(r, a))) && !inBox(m.ref(finalIndex(r, b))));
+            return;
+        }
+        QCOMPARE(finalIndex(r, a), finalIndex(r, b));
+        QVERIFY2(inBox(m.ref(finalIndex(r, a))), qPrintable(QString("merged node at z = %1").arg(m.ref(finalIndex(r, a)).z())));
+        QVERIFY(shortestEdge(m) > 0.03);
+        // Every other node keeps its side of the box's border.
+        for (int u = 0; u < start.nodeCount(); ++u)
+            if (u != a && u != b && finalIndex(r, u) >= 0)
+                QCOMPARE(inBox(m.ref(finalIndex(r, u))), inBox(start.ref(u)));
+    }
+
+    void aPitIsFilledForItsMouthsCollapse_data() {
+        QTest::addColumn<bool>("fill");
+        QTest::newRow("fillPits") << true;
+        QTest::newRow("not (the default)") << false;
+    }
+    void aPitIsFilledForItsMouthsCollapse() {
+        // A short boundary edge (a, b), the mouth of a pit (notch_regressions.h), whose collapse
+        // the link condition refuses; every other node fixed. With fillPits the pit is filled
+        // and the edge collapsed: the volume and Eq. 3 kept, every tet positive, the boundary a
+        // manifold, the edge's tets gone (the filling tet came and went). Without, nothing
+        // changes.
+        QFETCH(bool, fill);
+        QVERIFY(!ImproveOptions{}.fillPits);
+        const testing::PitCase c = testing::pitOnTheMyoma();
+        TetMesh m = TetMesh::fromArrays(c.nodes, c.tets);
+        computeLumpedMasses(m, kDensity);
+        QVERIFY2(meshViolations(m).isEmpty(), qPrintable(meshViolations(m)));
+        const TetMesh before = m;
+        std::vector<int> fixed;
+        for (int n = 0; n < m.nodeCount(); ++n)
+            if (n != c.a && n != c.b)
+                fixed.push_back(n);
+        ImproveOptions o;
+        o.density = kDensity;
+        o.shortEdge = 1.01 * (m.ref(c.a) - m.ref(c.b)).norm();  // only (a, b) is that short
+        o.fillPits = fill;
+        o.sweeps = 1;
+        const ImproveResult r = improveMesh(m, improveRegion(m, {c.a, c.b}, fixed, 0), o);
+        if (!fill) {
+            QCOMPARE(r.collapses, 0);
+            QCOMPARE(r.pitsFilled, 0);
+            QVERIFY(!r.renumbered());
+            QVERIFY(finalIndex(r, c.a) != finalIndex(r, c.b));
+            return;
+        }
+        QCOMPARE(r.pitsFilled, 1);
+        QCOMPARE(r.collapses, 1);
+        QCOMPARE(finalIndex(r, c.a), finalIndex(r, c.b));
+        const auto shell = std::count_if(before.tets().begin(), before.tets().end(), [&](const Tet& q) {
+            return std::find(q.begin(), q.end(), c.a) != q.end() && std::find(q.begin(), q.end(), c.b) != q.end();
+        });
+        QCOMPARE(m.tetCount(), before.tetCount() - static_cast<int>(shell));
+        QVERIFY2(brokenInvariants(before, m, r).isEmpty(), qPrintable(brokenInvariants(before, m, r)));
+        QVERIFY2(meshViolations(m).isEmpty(), qPrintable(meshViolations(m)));
+        QVERIFY2(boundaryViolations(m).isEmpty(), qPrintable(boundaryViolations(m)));
+        for (int n : fixed)
+            QVERIFY2(bitIdentical(m.ref(finalIndex(r, n)), before.ref(n)), qPrintable(QString("fixed node %1 moved").arg(n)));
     }
 
     void nearestToZeroInHullOfGradients() {
