@@ -1154,7 +1154,7 @@ private slots:
         QTest::newRow("not (the default)") << false;
     }
     void aPitIsFilledForItsMouthsCollapse() {
-        // A short boundary edge (a, b), the mouth of a pit (notch_regressions.h), whose collapse
+        // A short boundary edge (a, b), the mouth of a pit (pit_regressions.h), whose collapse
         // the link condition refuses; every other node fixed. With fillPits the pit is filled
         // and the edge collapsed: the volume and Eq. 3 kept, every tet positive, the boundary a
         // manifold, the edge's tets gone (the filling tet came and went). Without, nothing
